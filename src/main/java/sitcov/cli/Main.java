@@ -1,0 +1,130 @@
+package sitcov.cli;
+
+import java.io.PrintStream;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+/**
+ * The sitcov command line. {@link #main} is a thin shell over {@link #run}, which tests call
+ * directly with their own streams and read the exit code from.
+ */
+public final class Main {
+    static final String PROGRAM = "sitcov";
+    private static final String HELP_HINT = "Run 'sitcov --help' for usage.";
+
+    private final Map<String, Command> commands = new LinkedHashMap<>();
+
+    Main(List<Command> commands) {
+        for (Command command : commands) {
+            this.commands.put(command.name(), command);
+        }
+    }
+
+    /** The commands of this version of sitcov, in the order help lists them. */
+    static Main standard() {
+        return new Main(List.of(
+                new PlannedCommand("run", "PRESET", "run an experiment preset from experiments/"),
+                new PlannedCommand("simulate", "--seed S --internal-seed I [--faults SET]",
+                        "simulate one map and print the outcome"),
+                new PlannedCommand("map", "--seed S [--png FILE] [--save FILE]",
+                        "generate a map, describe it, render it to PNG"),
+                new PlannedCommand("coverage", "--maps N", "situation coverage reached by random maps"),
+                new PlannedCommand("faults", "[--calibrate --maps N]", "list or calibrate the seeded faults"),
+                new PlannedCommand("replay", "FILE", "replay a recorded run"),
+                new PlannedCommand("bench", "", "measure ticks, runs and candidate maps per second")));
+    }
+
+    public static void main(String[] args) {
+        int code = standard().run(args, System.out, System.err);
+        System.out.flush();
+        System.err.flush();
+        if (code != ExitCode.OK) {
+            System.exit(code);
+        }
+    }
+
+    /** Runs sitcov with {@code args}; returns the exit code instead of exiting. */
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        return standard().execute(args, out, err);
+    }
+
+    int execute(String[] args, PrintStream out, PrintStream err) {
+        try {
+            return dispatch(Arrays.asList(args), out, err);
+        } catch (UsageException e) {
+            err.println(PROGRAM + ": " + e.getMessage());
+            err.println(HELP_HINT);
+            return ExitCode.USAGE;
+        }
+    }
+
+    private int dispatch(List<String> args, PrintStream out, PrintStream err) throws UsageException {
+        if (args.isEmpty()) {
+            return defaultExperiment(out, err);
+        }
+        String first = args.get(0);
+        switch (first) {
+            case "--help", "-h", "help" -> {
+                printHelp(out);
+                return ExitCode.OK;
+            }
+            case "--version", "-V" -> {
+                out.println(PROGRAM + " " + Version.current());
+                return ExitCode.OK;
+            }
+            default -> {
+                // fall through to command lookup below
+            }
+        }
+        if (first.startsWith("-")) {
+            throw new UsageException("unknown option '" + first + "'; options go after a command, "
+                    + "and the only options on their own are --help and --version.");
+        }
+        Command command = commands.get(first);
+        if (command == null) {
+            throw new UsageException("unknown command '" + first + "'; the commands are "
+                    + String.join(", ", commands.keySet()) + ".");
+        }
+        List<String> rest = args.subList(1, args.size());
+        if (rest.contains("--help") || rest.contains("-h")) {
+            printCommandHelp(command, out);
+            return ExitCode.OK;
+        }
+        return command.run(rest, out, err);
+    }
+
+    private int defaultExperiment(PrintStream out, PrintStream err) throws UsageException {
+        Command run = commands.get("run");
+        return run.run(List.of("paper-rq1"), out, err);
+    }
+
+    private void printHelp(PrintStream out) {
+        int width = commands.keySet().stream().mapToInt(String::length).max().orElse(0);
+        out.println(PROGRAM + " " + Version.current()
+                + " - situation-coverage testing of a simulated autonomous car");
+        out.println();
+        out.println("Usage: " + PROGRAM + " [COMMAND [OPTIONS]]");
+        out.println("       " + PROGRAM + " --help | --version");
+        out.println();
+        out.println("With no command, runs the paper's comparison (run paper-rq1).");
+        out.println();
+        out.println("Commands:");
+        out.print(commands.values().stream()
+                .map(c -> String.format("  %-" + width + "s  %s%n", c.name(), c.summary()))
+                .collect(Collectors.joining()));
+        out.println();
+        out.println("Run '" + PROGRAM + " COMMAND --help' for a command's options.");
+        out.println("From Maven: mvn -q compile exec:java -Dexec.args=\"COMMAND OPTIONS\"");
+        out.println("Exit codes: 0 done, 1 failed or not available, 2 bad input.");
+    }
+
+    private static void printCommandHelp(Command command, PrintStream out) {
+        out.println("Usage: " + PROGRAM + " " + command.name()
+                + (command.synopsis().isEmpty() ? "" : " " + command.synopsis()));
+        out.println();
+        out.println(command.summary());
+    }
+}

@@ -1,0 +1,172 @@
+package sitcov.engine;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.PriorityQueue;
+import java.util.random.RandomGenerator;
+
+/**
+ * A discrete-time schedule in the manner of MASON's {@code sim.engine.Schedule}. Events are kept
+ * in order of (tick, ordering); events of the same tick and ordering run in an order shuffled
+ * afresh every tick from the schedule's own random stream, so no agent is always first and the
+ * order is still fixed by the seed.
+ *
+ * <p>Time is a whole tick ({@code long}); {@link #BEFORE_SIMULATION} until the first tick runs.
+ * An event may only be scheduled for a tick after the current one. Not thread-safe: one schedule
+ * belongs to one run.
+ */
+public final class Schedule {
+    /** The time before any tick has run. */
+    public static final long BEFORE_SIMULATION = -1;
+
+    private static final Comparator<Event> ORDER = Comparator
+            .comparingLong((Event e) -> e.tick)
+            .thenComparingInt(e -> e.ordering)
+            .thenComparingLong(e -> e.sequence);
+
+    private final RandomGenerator shuffle;
+    private final PriorityQueue<Event> queue = new PriorityQueue<>(ORDER);
+    private final List<Event> due = new ArrayList<>();
+    private long time = BEFORE_SIMULATION;
+    private long nextSequence;
+    /** Bumped by {@link #clear()} so a tick in progress knows to stop. */
+    private long generation;
+
+    public Schedule(RandomGenerator shuffle) {
+        this.shuffle = shuffle;
+    }
+
+    /** The last tick that ran, or {@link #BEFORE_SIMULATION}. */
+    public long time() {
+        return time;
+    }
+
+    /** True when no event remains to run. */
+    public boolean isEmpty() {
+        return queue.isEmpty();
+    }
+
+    /** Runs {@code agent} once, at {@code tick}. */
+    public void scheduleOnce(long tick, int ordering, Steppable agent) {
+        queue.add(newEvent(tick, ordering, 0, agent));
+    }
+
+    /** Runs {@code agent} once, at the tick after the current one. */
+    public void scheduleOnce(Steppable agent, int ordering) {
+        scheduleOnce(time + 1, ordering, agent);
+    }
+
+    /** Runs {@code agent} at {@code firstTick} and every {@code interval} ticks after, until stopped. */
+    public Stoppable scheduleRepeating(long firstTick, int ordering, long interval, Steppable agent) {
+        if (interval < 1) {
+            throw new IllegalArgumentException("a repeating event needs an interval of at least 1 tick, not " + interval);
+        }
+        Event event = newEvent(firstTick, ordering, interval, agent);
+        queue.add(event);
+        return event;
+    }
+
+    /** Runs {@code agent} every tick from the next one on, until stopped. */
+    public Stoppable scheduleRepeating(Steppable agent, int ordering) {
+        return scheduleRepeating(time + 1, ordering, 1, agent);
+    }
+
+    /**
+     * Runs every event of the next scheduled tick, in (ordering, shuffled) order.
+     *
+     * @return false if there was nothing to run
+     */
+    public boolean step(SimState state) {
+        Event first = queue.peek();
+        if (first == null) {
+            return false;
+        }
+        time = first.tick;
+        due.clear();
+        while (!queue.isEmpty() && queue.peek().tick == time) {
+            due.add(queue.poll());
+        }
+        shuffleWithinOrderings();
+        long started = generation;
+        for (int i = 0; i < due.size(); i++) {
+            Event event = due.get(i);
+            if (event.stopped) {
+                continue;
+            }
+            if (event.interval > 0) {
+                event.tick += event.interval;
+                queue.add(event);
+            }
+            event.agent.step(state);
+            if (generation != started) {
+                break;
+            }
+        }
+        due.clear();
+        return true;
+    }
+
+    /** Removes every event, including the rest of a tick in progress. Time is kept. */
+    public void clear() {
+        queue.clear();
+        due.clear();
+        generation++;
+    }
+
+    private Event newEvent(long tick, int ordering, long interval, Steppable agent) {
+        if (agent == null) {
+            throw new IllegalArgumentException("cannot schedule a null agent");
+        }
+        if (tick <= time) {
+            throw new IllegalArgumentException("cannot schedule an event at tick " + tick
+                    + ": the schedule is at tick " + time + ", so the earliest tick is " + (time + 1));
+        }
+        return new Event(tick, ordering, nextSequence++, interval, agent);
+    }
+
+    /** Fisher–Yates shuffle of each run of equal ordering in {@code due}, which arrives sorted. */
+    private void shuffleWithinOrderings() {
+        int start = 0;
+        while (start < due.size()) {
+            int ordering = due.get(start).ordering;
+            int end = start + 1;
+            while (end < due.size() && due.get(end).ordering == ordering) {
+                end++;
+            }
+            for (int i = end - 1; i > start; i--) {
+                int j = start + shuffle.nextInt(i - start + 1);
+                Event swap = due.get(i);
+                due.set(i, due.get(j));
+                due.set(j, swap);
+            }
+            start = end;
+        }
+    }
+
+    /** A scheduled agent; mutable only inside the schedule, where it is re-queued each interval. */
+    private final class Event implements Stoppable {
+        private long tick;
+        private final int ordering;
+        private final long sequence;
+        private final long interval;
+        private final Steppable agent;
+        private boolean stopped;
+
+        private Event(long tick, int ordering, long sequence, long interval, Steppable agent) {
+            this.tick = tick;
+            this.ordering = ordering;
+            this.sequence = sequence;
+            this.interval = interval;
+            this.agent = agent;
+        }
+
+        @Override
+        public void stop() {
+            if (!stopped) {
+                stopped = true;
+                queue.remove(this);
+            }
+        }
+    }
+}

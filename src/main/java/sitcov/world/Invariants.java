@@ -1,0 +1,173 @@
+package sitcov.world;
+
+import static sitcov.world.Dimensions.AUTONOMOUS_CAR_LENGTH;
+import static sitcov.world.Dimensions.AUTONOMOUS_CAR_WIDTH;
+import static sitcov.world.Dimensions.CAR_LENGTH;
+import static sitcov.world.Dimensions.CAR_WIDTH;
+import static sitcov.world.Dimensions.MIN_ROAD_LENGTH;
+import static sitcov.world.Dimensions.WORLD_HEIGHT;
+import static sitcov.world.Dimensions.WORLD_WIDTH;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.List;
+import sitcov.geom.Box;
+import sitcov.geom.Rect;
+import sitcov.geom.Vec2;
+
+/**
+ * The rules every generated map keeps (SPEC §3). {@link #violations} lists each broken rule in
+ * words; an empty list means the map is well formed.
+ */
+public final class Invariants {
+    private static final Rect WORLD = new Rect(0, 0, WORLD_WIDTH, WORLD_HEIGHT);
+    private static final double EPS = 1e-6;
+
+    private Invariants() {
+    }
+
+    public static List<String> violations(WorldMap map) {
+        List<String> v = new ArrayList<>(violations(map.layout()));
+        Layout layout = map.layout();
+        RoadNetwork network = RoadNetwork.of(layout);
+        List<Box> bodies = new ArrayList<>();
+        layout.carStart().ifPresent(s -> bodies.add(s.footprint(AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH)));
+        for (int i = 0; i < map.movingCars().size(); i++) {
+            StartPose pose = map.movingCars().get(i);
+            String name = "moving car " + i;
+            checkStart(v, name, pose, CAR_LENGTH, CAR_WIDTH, layout, network);
+            Box body = pose.footprint(CAR_LENGTH, CAR_WIDTH);
+            if (bodies.stream().anyMatch(body::overlaps)) {
+                v.add(name + " overlaps the autonomous car or another moving car");
+            }
+            bodies.add(body);
+        }
+        return v;
+    }
+
+    public static List<String> violations(Layout layout) {
+        List<String> v = new ArrayList<>();
+        RoadNetwork network = RoadNetwork.of(layout);
+        checkRoads(v, layout.roads());
+        checkJunctions(v, layout);
+        checkParkedCars(v, layout, network);
+        layout.target().ifPresent(t -> {
+            Vec2 p = t.position();
+            if (!network.isOnRoad(p.x(), p.y())) {
+                v.add("the Target " + p + " is off the road");
+            }
+            if (network.isInJunction(p.x(), p.y())) {
+                v.add("the Target " + p + " is in a junction");
+            }
+            if (layout.parkedCars().stream().anyMatch(c -> c.footprint().contains(p.x(), p.y()))) {
+                v.add("the Target " + p + " is inside a parked car");
+            }
+        });
+        layout.carStart().ifPresent(s ->
+                checkStart(v, "the autonomous car", s, AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH, layout, network));
+        return v;
+    }
+
+    private static void checkRoads(List<String> v, List<Road> roads) {
+        for (Road road : roads) {
+            if (!WORLD.contains(road.surface())) {
+                v.add("road " + road.id() + " leaves the world: " + road.surface());
+            }
+            if (road.length() < MIN_ROAD_LENGTH - EPS) {
+                v.add("road " + road.id() + " is " + road.length() + " m, shorter than " + MIN_ROAD_LENGTH);
+            }
+        }
+        // The network is a tree: roads meeting roads form a connected graph with one edge fewer than roads.
+        int edges = 0;
+        List<List<Integer>> next = new ArrayList<>();
+        roads.forEach(r -> next.add(new ArrayList<>()));
+        for (int a = 0; a < roads.size(); a++) {
+            for (int b = a + 1; b < roads.size(); b++) {
+                if (roads.get(a).surface().touches(roads.get(b).surface())) {
+                    edges++;
+                    next.get(a).add(b);
+                    next.get(b).add(a);
+                }
+            }
+        }
+        boolean[] seen = new boolean[roads.size()];
+        Deque<Integer> todo = new ArrayDeque<>(List.of(0));
+        int reached = 0;
+        while (!roads.isEmpty() && !todo.isEmpty()) {
+            int r = todo.pop();
+            if (!seen[r]) {
+                seen[r] = true;
+                reached++;
+                next.get(r).forEach(todo::push);
+            }
+        }
+        if (reached != roads.size() || edges != roads.size() - 1) {
+            v.add("the roads are not a tree: " + roads.size() + " roads, " + edges + " meetings, " + reached + " connected");
+        }
+    }
+
+    private static void checkJunctions(List<String> v, Layout layout) {
+        List<Junction> junctions = layout.junctions();
+        for (int a = 0; a < junctions.size(); a++) {
+            Junction j = junctions.get(a);
+            long carriers = layout.roads().stream().filter(r -> r.carries(j.centre())).count();
+            int arms = j.arms().size();
+            if (!(arms == 1 && carriers == 1) && !(arms == 3 && carriers == 2)) {
+                v.add("junction " + j.id() + " has " + arms + " arms on " + carriers + " roads");
+            }
+            for (int b = a + 1; b < junctions.size(); b++) {
+                if (j.square().overlaps(junctions.get(b).square())) {
+                    v.add("junctions " + j.id() + " and " + junctions.get(b).id() + " overlap");
+                }
+            }
+        }
+        for (Road road : layout.roads()) {
+            for (Vec2 end : List.of(road.start(), road.end())) {
+                if (junctions.stream().noneMatch(j -> j.contains(end.x(), end.y()))) {
+                    v.add("road " + road.id() + " ends at " + end + " with no junction or dead end");
+                }
+            }
+        }
+    }
+
+    private static void checkParkedCars(List<String> v, Layout layout, RoadNetwork network) {
+        List<ParkedCar> cars = layout.parkedCars();
+        for (int a = 0; a < cars.size(); a++) {
+            ParkedCar car = cars.get(a);
+            Box body = car.footprint();
+            if (!network.isOnRoad(body)) {
+                v.add("parked car " + car.id() + " is not wholly on the road");
+            }
+            if (network.overlapsJunctionZone(body)) {
+                v.add("parked car " + car.id() + " is in a junction or its approach or exit zone");
+            }
+            for (int b = a + 1; b < cars.size(); b++) {
+                if (body.overlaps(cars.get(b).footprint())) {
+                    v.add("parked cars " + car.id() + " and " + cars.get(b).id() + " overlap");
+                }
+            }
+        }
+    }
+
+    private static void checkStart(List<String> v, String name, StartPose pose, double length, double width,
+                                   Layout layout, RoadNetwork network) {
+        Vec2 p = pose.position();
+        boolean onLaneCentre = layout.roads().stream().anyMatch(road -> road.contains(p.x(), p.y())
+                && Axis.of(pose.heading()) == road.axis()
+                && Math.abs(road.across(p.x(), p.y()) - road.laneCentre(pose.heading())) <= EPS);
+        if (!onLaneCentre) {
+            v.add(name + " does not start on a lane centre facing its legal direction: " + pose);
+        }
+        Box body = pose.footprint(length, width);
+        if (!network.isOnRoad(body)) {
+            v.add(name + " does not start wholly on the road: " + pose);
+        }
+        if (network.overlapsJunction(body)) {
+            v.add(name + " starts in a junction: " + pose);
+        }
+        if (layout.parkedCars().stream().anyMatch(c -> c.footprint().overlaps(body))) {
+            v.add(name + " starts overlapping a parked car: " + pose);
+        }
+    }
+}

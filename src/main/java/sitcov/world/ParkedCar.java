@@ -1,0 +1,11 @@
+package sitcov.world;
+
+import sitcov.geom.Box;
+import sitcov.geom.Vec2;
+
+/** A parked car: 5 m × 2 m, centred on {@code centre}, its long side along its road, against a kerb. */
+public record ParkedCar(int id, int roadId, Vec2 centre, Axis axis) {
+    public Box footprint() {
+        return Box.centred(centre.x(), centre.y(), axis.bearing(), Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH);
+    }
+}

@@ -139,8 +139,8 @@ public final class Invariants {
             if (!network.isOnRoad(body)) {
                 v.add("parked car " + car.id() + " is not wholly on the road");
             }
-            if (network.overlapsJunctionZone(body)) {
-                v.add("parked car " + car.id() + " is in a junction or its approach or exit zone");
+            if (network.overlapsJunction(body) || network.isInJunctionZone(car.centre().x(), car.centre().y())) {
+                v.add("parked car " + car.id() + " is in a junction square, or centred in an approach or exit zone");
             }
             for (int b = a + 1; b < cars.size(); b++) {
                 if (body.overlaps(cars.get(b).footprint())) {

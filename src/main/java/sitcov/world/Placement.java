@@ -66,7 +66,8 @@ final class Placement {
         Vec2 centre = RoadNetwork.kerbsidePosition(road, x, y);
         ParkedCar car = new ParkedCar(id, road.id(), centre, road.axis());
         Box footprint = car.footprint();
-        if (!network.isOnRoad(footprint) || network.overlapsJunctionZone(footprint)) {
+        if (!network.isOnRoad(footprint) || network.overlapsJunction(footprint)
+                || network.isInJunctionZone(centre.x(), centre.y())) {
             return null;
         }
         double along = road.along(centre.x(), centre.y());

@@ -102,10 +102,10 @@ public final class RoadNetwork {
         return false;
     }
 
-    /** Whether the footprint's interior meets any junction's approach or exit zone. */
-    public boolean overlapsJunctionZone(Box footprint) {
+    /** Whether the point lies in any junction's square or approach or exit zone. */
+    public boolean isInJunctionZone(double x, double y) {
         for (Rect zone : zones) {
-            if (footprint.overlaps(zone)) {
+            if (zone.contains(x, y)) {
                 return true;
             }
         }

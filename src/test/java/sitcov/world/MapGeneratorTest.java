@@ -75,10 +75,11 @@ class MapGeneratorTest {
     }
 
     /**
-     * Means near the original's (reference §2.4, seeds 1..20 000). Tolerances: ±10 % for roads,
-     * junctions and moving cars, where our rules differ only by a 1 m clearance between roads that
-     * are not parent and branch; ±25 % for parked cars, because we keep the whole car (not only its
-     * centre) out of junction approach and exit zones, which leaves less kerb.
+     * Means near the original's (reference §2.4, seeds 1..20 000). Tolerance ±10 %: our rules differ
+     * from the original's by a 1 m clearance between roads that are not parent and branch (fewer
+     * branches fit), by keeping parked cars' whole bodies out of junction squares, and by its
+     * off-by-one (a place found on the last try counts); we measure 9.8 T-junctions, 21.6
+     * junctions, 10.8 roads, 4.1 parked cars and 11.6 moving cars over seeds 1..10 000.
      */
     @Test
     void meanCountsAreInTheNeighbourhoodOfTheOriginals() {
@@ -86,7 +87,7 @@ class MapGeneratorTest {
         assertNear(22.8, stats(m -> m.layout().junctions().size()).getAverage(), 0.10, "junctions");
         assertNear(11.4, stats(m -> m.layout().roads().size()).getAverage(), 0.10, "roads");
         assertNear(11.9, stats(m -> m.movingCars().size()).getAverage(), 0.10, "moving cars");
-        assertNear(4.3, stats(m -> m.layout().parkedCars().size()).getAverage(), 0.25, "parked cars");
+        assertNear(4.3, stats(m -> m.layout().parkedCars().size()).getAverage(), 0.10, "parked cars");
     }
 
     @Test

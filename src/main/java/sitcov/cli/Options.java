@@ -1,0 +1,159 @@
+package sitcov.cli;
+
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * The options of one command: {@code --name value} (or {@code --name=value}) for valued options,
+ * {@code --name} for flags, anything else positional. Every mistake becomes a {@link UsageException}
+ * that names the command and the fix.
+ */
+final class Options {
+    private final String command;
+    private final Map<String, String> values = new LinkedHashMap<>();
+    private final Set<String> flags = new LinkedHashSet<>();
+    private final List<String> positional = new ArrayList<>();
+
+    private Options(String command) {
+        this.command = command;
+    }
+
+    static Options parse(String command, List<String> args, Set<String> valued, Set<String> flagNames)
+            throws UsageException {
+        Options options = new Options(command);
+        for (int i = 0; i < args.size(); i++) {
+            String arg = args.get(i);
+            if (!arg.startsWith("--")) {
+                options.positional.add(arg);
+                continue;
+            }
+            int eq = arg.indexOf('=');
+            String name = eq < 0 ? arg : arg.substring(0, eq);
+            if (valued.contains(name)) {
+                String value;
+                if (eq >= 0) {
+                    value = arg.substring(eq + 1);
+                } else if (i + 1 < args.size() && !args.get(i + 1).startsWith("--")) {
+                    value = args.get(++i);
+                } else {
+                    throw new UsageException(command + ": " + name + " needs a value.");
+                }
+                if (options.values.put(name, value) != null) {
+                    throw new UsageException(command + ": " + name + " is given twice; give it once.");
+                }
+            } else if (flagNames.contains(name) && eq < 0) {
+                options.flags.add(name);
+            } else {
+                Set<String> all = new LinkedHashSet<>(valued);
+                all.addAll(flagNames);
+                throw new UsageException(command + ": unknown option '" + arg + "'; the options are "
+                        + String.join(", ", all) + ".");
+            }
+        }
+        return options;
+    }
+
+    boolean has(String name) {
+        return flags.contains(name) || values.containsKey(name);
+    }
+
+    Optional<String> value(String name) {
+        return Optional.ofNullable(values.get(name));
+    }
+
+    List<String> positional() {
+        return positional;
+    }
+
+    void noPositional() throws UsageException {
+        if (!positional.isEmpty()) {
+            throw new UsageException(command + ": unexpected argument '" + positional.get(0) + "'.");
+        }
+    }
+
+    /** A seed: any whole number that fits in 64 bits. */
+    Optional<Long> seed(String name) throws UsageException {
+        Optional<String> text = value(name);
+        if (text.isEmpty()) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(Long.parseLong(text.get().strip()));
+        } catch (NumberFormatException e) {
+            throw new UsageException(command + ": " + name + " needs a whole number such as 42 (64-bit), not '"
+                    + text.get() + "'.");
+        }
+    }
+
+    /** A count of at least {@code min}. */
+    Optional<Integer> count(String name, int min) throws UsageException {
+        Optional<String> text = value(name);
+        if (text.isEmpty()) {
+            return Optional.empty();
+        }
+        try {
+            int v = Integer.parseInt(text.get().strip());
+            if (v >= min) {
+                return Optional.of(v);
+            }
+        } catch (NumberFormatException e) {
+            // reported below
+        }
+        throw new UsageException(command + ": " + name + " needs a whole number of at least " + min + ", not '"
+                + text.get() + "'.");
+    }
+
+    /** A file to read: it must exist and be a readable file. */
+    Optional<Path> inputFile(String name) throws UsageException {
+        Optional<Path> path = path(name);
+        if (path.isPresent()) {
+            Path p = path.get();
+            if (!Files.isRegularFile(p) || !Files.isReadable(p)) {
+                throw new UsageException(command + ": cannot read " + name + " " + p
+                        + (Files.exists(p) ? " (not a readable file)" : " (no such file)") + "; check the path.");
+            }
+        }
+        return path;
+    }
+
+    /** A file to write: its folder must exist and be writable; the file itself may be replaced. */
+    Optional<Path> outputFile(String name) throws UsageException {
+        Optional<Path> path = path(name);
+        if (path.isPresent()) {
+            Path p = path.get().toAbsolutePath();
+            Path folder = p.getParent();
+            if (Files.isDirectory(p)) {
+                throw new UsageException(command + ": " + name + " " + path.get() + " is a folder; name a file in it.");
+            }
+            if (folder == null || !Files.isDirectory(folder)) {
+                throw new UsageException(command + ": the folder of " + name + " " + path.get()
+                        + " does not exist; create it first.");
+            }
+            if (!Files.isWritable(folder)) {
+                throw new UsageException(command + ": cannot write into " + folder + " for " + name
+                        + "; choose a writable folder.");
+            }
+        }
+        return path;
+    }
+
+    private Optional<Path> path(String name) throws UsageException {
+        Optional<String> text = value(name);
+        if (text.isEmpty()) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(Path.of(text.get()));
+        } catch (InvalidPathException e) {
+            throw new UsageException(command + ": " + name + " '" + text.get() + "' is not a valid path.");
+        }
+    }
+}

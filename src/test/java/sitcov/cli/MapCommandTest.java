@@ -1,0 +1,96 @@
+package sitcov.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import sitcov.world.MapGenerator;
+import sitcov.world.SituationFile;
+
+class MapCommandTest {
+    @TempDir
+    Path folder;
+
+    @Test
+    void aSeedIsDescribedInOneParagraph() {
+        CliRunner result = CliRunner.run("map", "--seed", "5");
+
+        assertEquals(ExitCode.OK, result.exitCode(), result.err());
+        assertTrue(result.out().startsWith("Map of seed 5: "), result.out());
+        assertEquals(1, result.out().lines().count());
+    }
+
+    @Test
+    void aSavedMapLoadsBackAsTheSameMapAndDrawsToPng() throws Exception {
+        Path situation = folder.resolve("five.situation");
+        Path png = folder.resolve("five.png");
+
+        CliRunner saved = CliRunner.run("map", "--seed", "5", "--save", situation.toString());
+        CliRunner loaded = CliRunner.run("map", "--load", situation.toString(), "--png", png.toString());
+
+        assertEquals(ExitCode.OK, saved.exitCode(), saved.err());
+        assertEquals(ExitCode.OK, loaded.exitCode(), loaded.err());
+        assertEquals(MapGenerator.generate(5), SituationFile.read(situation));
+        assertEquals(saved.out().lines().findFirst(), loaded.out().lines().findFirst());
+        assertTrue(Files.size(png) > 1000);
+    }
+
+    @Test
+    void aBadSeedIsRefusedWithTheFix() {
+        CliRunner result = CliRunner.run("map", "--seed", "forty-two");
+
+        assertEquals(ExitCode.USAGE, result.exitCode());
+        assertTrue(result.err().startsWith("sitcov: map: --seed needs a whole number such as 42"), result.err());
+    }
+
+    @Test
+    void seedAndLoadTogetherOrNeitherAreRefused() {
+        assertEquals(ExitCode.USAGE, CliRunner.run("map").exitCode());
+        assertEquals(ExitCode.USAGE, CliRunner.run("map", "--seed", "1", "--load", "x").exitCode());
+    }
+
+    @Test
+    void aMissingSituationFileIsNamed() {
+        CliRunner result = CliRunner.run("map", "--load", folder.resolve("nope.situation").toString());
+
+        assertEquals(ExitCode.USAGE, result.exitCode());
+        assertTrue(result.err().contains("nope.situation (no such file)"), result.err());
+    }
+
+    @Test
+    void aMalformedSituationFileIsReportedWithItsLineAndLeftAlone() throws IOException {
+        Path bad = folder.resolve("bad.situation");
+        Files.writeString(bad, "sitcov-situation 1\nseed x\n");
+
+        CliRunner result = CliRunner.run("map", "--load", bad.toString());
+
+        assertEquals(ExitCode.USAGE, result.exitCode());
+        assertTrue(result.err().contains("bad.situation:2: expected a whole number for SEED"), result.err());
+        assertEquals("sitcov-situation 1\nseed x\n", Files.readString(bad));
+    }
+
+    @Test
+    void anOutputInAMissingFolderIsRefusedBeforeAnythingIsWritten() {
+        Path png = folder.resolve("no-such-folder").resolve("map.png");
+
+        CliRunner result = CliRunner.run("map", "--seed", "1", "--png", png.toString());
+
+        assertEquals(ExitCode.USAGE, result.exitCode());
+        assertTrue(result.err().contains("does not exist; create it first"), result.err());
+        assertEquals("", result.out());
+        assertFalse(Files.exists(png));
+    }
+
+    @Test
+    void anUnknownOptionListsTheValidOnes() {
+        CliRunner result = CliRunner.run("map", "--sed", "1");
+
+        assertEquals(ExitCode.USAGE, result.exitCode());
+        assertTrue(result.err().contains("unknown option '--sed'; the options are"), result.err());
+    }
+}

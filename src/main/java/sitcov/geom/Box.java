@@ -119,6 +119,18 @@ public final class Box {
         return Math.abs(dx * fx + dy * fy) < halfLength + rf - EPS && Math.abs(dx * sx + dy * sy) < halfWidth + rs - EPS;
     }
 
+    /**
+     * Where the ray from ({@code ox}, {@code oy}) along the unit vector ({@code dx}, {@code dy})
+     * is inside the box: writes the entry and exit distances to {@code out[0]} and {@code out[1]}
+     * and returns true, or returns false when the ray misses. Allocates nothing.
+     */
+    public boolean rayInterval(double ox, double oy, double dx, double dy, double[] out) {
+        double rx = ox - cx;
+        double ry = oy - cy;
+        return Rays.slabs(rx * fx + ry * fy, dx * fx + dy * fy, halfLength,
+                rx * sx + ry * sy, dx * sx + dy * sy, halfWidth, out);
+    }
+
     /** Whether every point of the box lies in the union of {@code rects} (which must have no holes). */
     public boolean isCoveredBy(List<Rect> rects) {
         double[] c = corners();

@@ -52,6 +52,16 @@ public record Rect(double minX, double minY, double maxX, double maxY) {
         return minX <= other.maxX && other.minX <= maxX && minY <= other.maxY && other.minY <= maxY;
     }
 
+    /**
+     * Where the ray from ({@code ox}, {@code oy}) along the unit vector ({@code dx}, {@code dy})
+     * is inside the rectangle: entry and exit distances in {@code out}; false when it misses.
+     */
+    public boolean rayInterval(double ox, double oy, double dx, double dy, double[] out) {
+        double hx = (maxX - minX) / 2;
+        double hy = (maxY - minY) / 2;
+        return Rays.slabs(ox - (minX + hx), dx, hx, oy - (minY + hy), dy, hy, out);
+    }
+
     public Rect expanded(double margin) {
         return new Rect(minX - margin, minY - margin, maxX + margin, maxY + margin);
     }

@@ -1,0 +1,116 @@
+package sitcov.oracle;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+import sitcov.engine.SimState;
+import sitcov.engine.Steppable;
+import sitcov.geom.Box;
+import sitcov.vehicles.AutonomousCar;
+import sitcov.vehicles.Dynamics;
+import sitcov.vehicles.MovingCar;
+import sitcov.vehicles.Scene;
+
+/**
+ * The accident oracle, stepped every tick after all vehicles moved. Each accident is an event:
+ * it is recorded when the car enters the state (a new overlap, going off the road, crossing the
+ * centre line), not again while the state lasts. It also ends the run: when the car reaches the
+ * Target, or with a TIMEOUT event after 5000 ticks.
+ */
+public final class AccidentDetector implements Steppable {
+    /** After every vehicle has moved. */
+    public static final int ORDERING = 1;
+
+    private final Scene scene;
+    private final boolean[] touchingParked;
+    private final boolean[] touchingMoving;
+    private final List<Accident> accidents = new ArrayList<>();
+    private final Map<Blame, Integer> excused = new EnumMap<>(Blame.class);
+    private final CentreLine centreLine;
+    private boolean offRoad;
+    private boolean overCentreLine;
+    private Outcome outcome;
+    private long ticks;
+
+    public AccidentDetector(Scene scene) {
+        this.scene = scene;
+        this.touchingParked = new boolean[scene.parkedBodies().size()];
+        this.touchingMoving = new boolean[scene.movingCars().size()];
+        this.centreLine = new CentreLine(scene.network());
+    }
+
+    @Override
+    public void step(SimState state) {
+        AutonomousCar car = scene.autonomousCar();
+        long tick = state.tick();
+        Box body = car.footprint();
+        List<Box> parked = scene.parkedBodies();
+        for (int i = 0; i < parked.size(); i++) {
+            boolean touching = body.overlaps(parked.get(i));
+            if (touching && !touchingParked[i]) {
+                record(tick, AccidentType.CLASHWITHOBSTACLE, car, i);
+            }
+            touchingParked[i] = touching;
+        }
+        boolean off = !scene.network().isOnRoad(body);
+        if (off && !offRoad) {
+            record(tick, AccidentType.LEAVEROAD, car, -1);
+        }
+        offRoad = off;
+        boolean over = centreLine.isOver(car, body) && !car.overtakingStage().isPassing() && !car.isCrossingJunction();
+        if (over && !overCentreLine) {
+            record(tick, AccidentType.CROSSCENTRELINE, car, -1);
+        }
+        overCentreLine = over;
+        List<MovingCar> moving = scene.movingCars();
+        for (int i = 0; i < moving.size(); i++) {
+            MovingCar other = moving.get(i);
+            boolean touching = other.isActive() && body.overlaps(other.footprint());
+            if (touching && !touchingMoving[i]) {
+                Blame blame = BlameRules.judge(car, other, centreLine, over);
+                if (blame.isAccident()) {
+                    record(tick, AccidentType.CLASHWITHOTHERCAR, car, other.id());
+                } else {
+                    excused.merge(blame, 1, Integer::sum);
+                }
+            }
+            touchingMoving[i] = touching;
+        }
+        if (car.hasReachedTarget()) {
+            finish(state, Outcome.TARGET_REACHED, tick);
+        } else if (tick + 1 >= Dynamics.TIMEOUT_TICKS) {
+            record(tick, AccidentType.TIMEOUT, car, -1);
+            finish(state, Outcome.TIMEOUT, tick);
+        }
+    }
+
+    private void record(long tick, AccidentType type, AutonomousCar car, int other) {
+        accidents.add(new Accident(tick, type, car.x(), car.y(), other));
+    }
+
+    private void finish(SimState state, Outcome how, long tick) {
+        outcome = how;
+        ticks = tick + 1;
+        state.schedule().clear();
+    }
+
+    /** Accidents so far, in the order they happened. */
+    public List<Accident> accidents() {
+        return Collections.unmodifiableList(accidents);
+    }
+
+    /** How the run ended, or null while it goes on. */
+    public Outcome outcome() {
+        return outcome;
+    }
+
+    public long ticks() {
+        return ticks;
+    }
+
+    public Map<Blame, Integer> excusedContacts() {
+        return excused;
+    }
+}

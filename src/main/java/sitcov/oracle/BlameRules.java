@@ -1,0 +1,29 @@
+package sitcov.oracle;
+
+import sitcov.geom.Bearing;
+import sitcov.vehicles.AutonomousCar;
+import sitcov.vehicles.Vehicle;
+
+/** Decides, by the named {@link Blame} rules, whether a contact with a moving car is the car's fault. */
+final class BlameRules {
+    private BlameRules() {
+    }
+
+    static Blame judge(AutonomousCar car, Vehicle other, CentreLine centreLine, boolean carOverCentreLine) {
+        if (car.speed() == 0) {
+            return Blame.EXCUSED_STANDING_STILL;
+        }
+        double headingDifference = Math.abs(Bearing.turn(car.heading(), other.heading()));
+        double behind = (other.x() - car.x()) * Bearing.dx(car.heading()) + (other.y() - car.y()) * Bearing.dy(car.heading());
+        if (headingDifference < 45 && behind < 0 && other.speed() > car.speed()) {
+            return Blame.EXCUSED_HIT_FROM_BEHIND;
+        }
+        if (centreLine.touches(other.footprint())) {
+            return Blame.EXCUSED_OTHER_ON_CENTRE_LINE;
+        }
+        if (headingDifference > 135 && !carOverCentreLine && !car.overtakingStage().isPassing()) {
+            return Blame.EXCUSED_OTHER_IN_WRONG_LANE;
+        }
+        return Blame.AT_FAULT;
+    }
+}

@@ -1,0 +1,34 @@
+package sitcov.oracle;
+
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The result of one run: how it ended, every accident event in order, the contacts the blame
+ * rules excused, the ticks simulated, and both seeds that reproduce it.
+ */
+public record RunResult(long externalSeed, long internalSeed, Outcome outcome, List<Accident> accidents,
+                        Map<Blame, Integer> excusedContacts, long ticks) {
+    public RunResult {
+        accidents = List.copyOf(accidents);
+        excusedContacts = Map.copyOf(excusedContacts);
+    }
+
+    public boolean hasAccident() {
+        return !accidents.isEmpty();
+    }
+
+    public long count(AccidentType type) {
+        return accidents.stream().filter(a -> a.type() == type).count();
+    }
+
+    /** Accident counts for every type, in type order. */
+    public Map<AccidentType, Long> countsByType() {
+        Map<AccidentType, Long> counts = new EnumMap<>(AccidentType.class);
+        for (AccidentType t : AccidentType.values()) {
+            counts.put(t, count(t));
+        }
+        return counts;
+    }
+}

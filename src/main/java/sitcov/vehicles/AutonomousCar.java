@@ -1,0 +1,242 @@
+package sitcov.vehicles;
+
+import java.util.random.RandomGenerator;
+import sitcov.engine.SimState;
+import sitcov.engine.Steppable;
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSwitchboard;
+import sitcov.geom.Bearing;
+import sitcov.geom.Compass;
+import sitcov.world.Dimensions;
+import sitcov.world.Road;
+import sitcov.world.StartPose;
+
+/**
+ * The autonomous car, the system under test. Each tick it looks (road-marking camera, LIDAR,
+ * traffic radar), then lets its behaviours state what they want — junctions, overtaking, keeping
+ * its distance, reaching the Target, keeping its lane — and drives: one speed change, one turn of
+ * at most 15°, one move. Seeded faults act at the seams each behaviour names.
+ */
+public final class AutonomousCar implements Vehicle, Steppable {
+    public static final int ID = 0;
+    /** The stream its own random decisions (the choice among exits already taken) come from. */
+    public static final String DECISIONS_STREAM = "autonomous-car.decisions";
+    static final double LOOKAHEAD = 6;
+    /** Its rear axle, which it turns about, is this far behind its front. */
+    static final double REAR_AXLE = 1.5;
+
+    private final Scene scene;
+    private final FaultSwitchboard faults;
+    private final Body body;
+    private final CameraSettings cameraSettings;
+    private final MarkingCamera camera;
+    private final Lidar lidar;
+    private final TrafficSensor traffic = new TrafficSensor();
+    private final Waypoints waypoints;
+    private final JunctionDriver junctions;
+    private final Overtaker overtaker;
+    private final TargetSeeker targetSeeker;
+    private final Intent intent = new Intent();
+    private Compass lane;
+    private LaneEstimate estimate = LaneEstimate.NOTHING_SEEN;
+    private boolean reachedTarget;
+
+    AutonomousCar(Scene scene, StartPose start, FaultSwitchboard faults, RandomGenerator decisions) {
+        this.scene = scene;
+        this.faults = faults;
+        this.body = new Body(start.position().x(), start.position().y(), start.heading().bearing(), REAR_AXLE);
+        this.lane = start.heading();
+        this.cameraSettings = CameraFaults.settings(faults);
+        this.camera = new MarkingCamera(scene.network());
+        this.lidar = new Lidar(scene.network());
+        this.waypoints = new Waypoints(faults);
+        this.junctions = new JunctionDriver(this, faults, decisions, scene.network().junctions().size());
+        this.overtaker = new Overtaker(this, faults);
+        this.targetSeeker = new TargetSeeker(this, faults);
+    }
+
+    @Override
+    public void step(SimState state) {
+        if (reachedTarget) {
+            return;
+        }
+        intent.reset();
+        followHeadingIntoLane();
+        estimate = lookForMarkings();
+        traffic.scan(scene, this, body.x(), body.y(), body.heading(), lane, estimate.laneCentre(), -5, 40);
+        junctions.releaseIfLeft();
+        junctions.plan(intent, lane);
+        if (!junctions.isCrossing()) {
+            overtaker.plan(intent, lane, estimate.laneCentre());
+        }
+        keepDistance();
+        targetSeeker.plan(intent, lane, estimate);
+        keepLane();
+        drive();
+        reachedTarget = targetSeeker.isReached(lane, estimate);
+    }
+
+    /** Outside junctions and manoeuvres the lane direction follows the car's heading. */
+    private void followHeadingIntoLane() {
+        if (junctions.isCrossing() || overtaker.stage().isPassing()) {
+            return;
+        }
+        Compass nearest = Compass.nearest(body.heading());
+        if (Math.abs(Bearing.turn(body.heading(), nearest.bearing())) < 30) {
+            lane = nearest;
+        }
+    }
+
+    private LaneEstimate lookForMarkings() {
+        LaneEstimate seen = camera.look(body.x(), body.y(), lane, cameraSettings);
+        if (cameraSettings != CameraSettings.STANDARD) {
+            LaneEstimate correct = camera.look(body.x(), body.y(), lane, CameraSettings.STANDARD);
+            CameraFaults.record(faults, !seen.equals(correct));
+        }
+        return seen;
+    }
+
+    /** Keeps a stopping distance to whatever moves in its path. */
+    private void keepDistance() {
+        double gap = traffic.pathGap();
+        if (Double.isInfinite(gap)) {
+            return;
+        }
+        double lead = traffic.pathSpeed();
+        double room = lead >= 0
+                ? gap + Dynamics.stoppingDistance(lead) - lead - 2
+                : gap - 2 + 4 * lead;
+        intent.stopWithin(room);
+    }
+
+    /** Steers to the lane centre the camera sees, a lookahead ahead; straight on when it sees none. */
+    private void keepLane() {
+        double offset = estimate.anySeen() ? estimate.laneCentre() : 0;
+        intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(offset, LOOKAHEAD)), "lane");
+    }
+
+    private void drive() {
+        double limit = intent.speedLimit();
+        if (intent.isCrawl() && limit >= Dynamics.CRAWL_FLOOR) {
+            crawl();
+        } else {
+            body.approachSpeed(limit);
+        }
+        body.turnTowards(intent.bearing(), Dynamics.MAX_TURN);
+        body.move();
+    }
+
+    /** Holds speed in the crawl band (faults 5 and 6 act here). */
+    private void crawl() {
+        if (body.speed() < Dynamics.CRAWL_FLOOR) {
+            body.accelerate();
+            if (faults.isActive(Fault.CRAWL_DOUBLE_ACCELERATION)) {
+                body.accelerate();
+                faults.effective(Fault.CRAWL_DOUBLE_ACCELERATION);
+            }
+        } else if (body.speed() >= Dynamics.CRAWL_CEILING) {
+            body.brake();
+            if (faults.isActive(Fault.CRAWL_DOUBLE_BRAKING)) {
+                body.brake();
+                faults.effective(Fault.CRAWL_DOUBLE_BRAKING);
+            }
+        }
+    }
+
+    Road road(Compass direction) {
+        return Lanes.roadAlong(scene.network(), body.x(), body.y(), direction);
+    }
+
+    void setLane(Compass direction) {
+        lane = direction;
+    }
+
+    Scene scene() {
+        return scene;
+    }
+
+    Waypoints waypoints() {
+        return waypoints;
+    }
+
+    Lidar lidar() {
+        return lidar;
+    }
+
+    TrafficSensor traffic() {
+        return traffic;
+    }
+
+    /** Whether it stands on the Target (the run is then over). */
+    public boolean hasReachedTarget() {
+        return reachedTarget;
+    }
+
+    public OvertakingStage overtakingStage() {
+        return overtaker.stage();
+    }
+
+    /** Whether it is turning through a junction square (being over the centre line is then justified). */
+    public boolean isCrossingJunction() {
+        return junctions.isCrossing();
+    }
+
+    public boolean isWaitingAtJunction() {
+        return junctions.isWaiting();
+    }
+
+    /** The lane direction it is driving. */
+    public Compass lane() {
+        return lane;
+    }
+
+    /** Where it believes its lane centre is, metres to its right. */
+    public double believedLaneCentre() {
+        return estimate.laneCentre();
+    }
+
+    /** Which behaviour steered in the last tick. */
+    public String steeredBy() {
+        return intent.steeredBy();
+    }
+
+    @Override
+    public int id() {
+        return ID;
+    }
+
+    @Override
+    public double x() {
+        return body.x();
+    }
+
+    @Override
+    public double y() {
+        return body.y();
+    }
+
+    @Override
+    public double heading() {
+        return body.heading();
+    }
+
+    @Override
+    public double speed() {
+        return body.speed();
+    }
+
+    @Override
+    public double length() {
+        return Dimensions.AUTONOMOUS_CAR_LENGTH;
+    }
+
+    @Override
+    public double width() {
+        return Dimensions.AUTONOMOUS_CAR_WIDTH;
+    }
+
+    @Override
+    public boolean isActive() {
+        return true;
+    }
+}

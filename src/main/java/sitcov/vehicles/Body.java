@@ -1,0 +1,91 @@
+package sitcov.vehicles;
+
+import sitcov.geom.Bearing;
+
+/**
+ * The kinematic state of a car: front-centre position, heading and speed, changed only by the
+ * shared dynamics (at most one speed change and one capped turn a tick, then a move). A car turns
+ * about its rear axle, {@code pivot} metres behind its front, as a real car does: its body
+ * follows the inside of a bend rather than swinging its tail out across the kerb.
+ */
+final class Body {
+    private final double pivot;
+    private double x;
+    private double y;
+    private double heading;
+    private double speed;
+
+    Body(double x, double y, double heading, double pivot) {
+        this.pivot = pivot;
+        this.x = x;
+        this.y = y;
+        this.heading = Bearing.normalise(heading);
+    }
+
+    double x() {
+        return x;
+    }
+
+    double y() {
+        return y;
+    }
+
+    double heading() {
+        return heading;
+    }
+
+    double speed() {
+        return speed;
+    }
+
+    void place(double nx, double ny, double nheading) {
+        x = nx;
+        y = ny;
+        heading = Bearing.normalise(nheading);
+        speed = 0;
+    }
+
+    void accelerate() {
+        speed = Math.min(Dynamics.MAX_SPEED, speed + Dynamics.ACCELERATION);
+    }
+
+    void brake() {
+        speed = Math.max(0, speed - Dynamics.BRAKING);
+    }
+
+    void stop() {
+        speed = 0;
+    }
+
+    /** One tick's speed change towards {@code target}: accelerate, brake or hold, never overshooting by more than one step. */
+    void approachSpeed(double target) {
+        if (speed > target + 1e-9) {
+            brake();
+        } else if (speed + Dynamics.ACCELERATION <= target + 1e-9) {
+            accelerate();
+        } else if (speed < target) {
+            speed = target;
+        }
+    }
+
+    /** Turns towards {@code bearing} by at most {@code maxTurn} degrees. */
+    void turnTowards(double bearing, double maxTurn) {
+        double turn = Bearing.turn(heading, bearing);
+        turn = Math.max(-maxTurn, Math.min(maxTurn, turn));
+        if (turn == 0) {
+            return;
+        }
+        double px = x - pivot * Bearing.dx(heading);
+        double py = y - pivot * Bearing.dy(heading);
+        heading = Bearing.normalise(heading + turn);
+        x = px + pivot * Bearing.dx(heading);
+        y = py + pivot * Bearing.dy(heading);
+    }
+
+    /** Moves one tick along the heading at the current speed. */
+    void move() {
+        double r = Math.toRadians(heading);
+        x += speed * Math.sin(r);
+        y += speed * Math.cos(r);
+    }
+}

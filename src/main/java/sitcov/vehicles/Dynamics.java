@@ -1,0 +1,45 @@
+package sitcov.vehicles;
+
+/** Speeds and turns every car shares (reference §1.2), per tick of 0.2 s. */
+public final class Dynamics {
+    /** 2.5 m per tick: 12.5 m/s, 45 km/h. */
+    public static final double MAX_SPEED = 2.5;
+    public static final double ACCELERATION = 0.1;
+    public static final double BRAKING = 0.15625;
+    public static final double MAX_TURN = 15;
+    /** The crawl band: below its floor a crawling car accelerates, at or above its ceiling it brakes. */
+    public static final double CRAWL_FLOOR = BRAKING;
+    public static final double CRAWL_CEILING = 2 * BRAKING;
+    /** Ticks in a run before it times out. */
+    public static final long TIMEOUT_TICKS = 5000;
+
+    private Dynamics() {
+    }
+
+    /**
+     * The distance a car needs to stop from {@code speed}: one tick at the current speed, then the
+     * ticks of full braking.
+     */
+    public static double stoppingDistance(double speed) {
+        double d = speed;
+        for (double v = speed - BRAKING; v > 0; v -= BRAKING) {
+            d += v;
+        }
+        return d;
+    }
+
+    /** The highest speed from which a car can still stop within {@code distance}. */
+    public static double speedToStopWithin(double distance) {
+        if (distance <= 0) {
+            return 0;
+        }
+        // invert stoppingDistance approximately from below: v + v^2 / (2b) <= d
+        double b = BRAKING;
+        double v = -b + Math.sqrt(b * b + 2 * b * distance);
+        // the discrete sum is a little larger than the integral; back off until it fits
+        while (v > 0 && stoppingDistance(v) > distance) {
+            v -= 0.01;
+        }
+        return Math.max(0, Math.min(MAX_SPEED, v));
+    }
+}

@@ -1,0 +1,205 @@
+package sitcov.vehicles;
+
+import java.util.List;
+import java.util.random.RandomGenerator;
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSwitchboard;
+import sitcov.geom.Bearing;
+import sitcov.geom.Compass;
+import sitcov.world.Junction;
+import sitcov.world.Road;
+
+/**
+ * The autonomous car at junctions (reference §3.4): slows on the approach, asks for the junction
+ * before entering and waits at the square's edge while another vehicle holds it, then crosses
+ * towards the exit it chose — exits not yet taken first, then the one nearest the Target, and when
+ * every exit was taken, each competes with probability 0.8^(times taken). Dead ends are left by a
+ * U-turn through the square.
+ */
+final class JunctionDriver {
+    static final double APPROACH_SPEED = 1.25;
+    static final double STRAIGHT_SPEED = 0.8;
+    static final double RIGHT_TURN_SPEED = 0.6;
+    /** Ticks after which another vehicle's hold on a junction is taken to be stale. */
+    static final long PATIENCE = 80;
+    static final double EXIT_BEYOND_SQUARE = 1.5;
+    static final double EXIT_REACHED = 1.5;
+
+    private final AutonomousCar car;
+    private final FaultSwitchboard faults;
+    private final RandomGenerator decisions;
+    private final int[][] exitsTaken;
+    private int held = -1;
+    private Compass arrival;
+    private Compass exit;
+    private int waypoint;
+    private CrossingPath path;
+    private boolean crossing;
+    private boolean waiting;
+
+    JunctionDriver(AutonomousCar car, FaultSwitchboard faults, RandomGenerator decisions, int junctions) {
+        this.car = car;
+        this.faults = faults;
+        this.decisions = decisions;
+        this.exitsTaken = new int[junctions][4];
+    }
+
+    boolean isCrossing() {
+        return crossing;
+    }
+
+    boolean isWaiting() {
+        return waiting;
+    }
+
+    /** Lets go of the junction once the car's whole footprint has left its square. */
+    void releaseIfLeft() {
+        if (held >= 0 && !crossing) {
+            Junction j = car.scene().network().junctions().get(held);
+            if (!car.footprint().overlaps(j.square())) {
+                car.scene().occupancy().release(held, car.id());
+                held = -1;
+            }
+        }
+    }
+
+    void plan(Intent intent, Compass lane) {
+        waiting = false;
+        if (crossing) {
+            cross(intent);
+            return;
+        }
+        Road road = car.road(lane);
+        if (road == null) {
+            return;
+        }
+        Junction next = Lanes.nextJunction(car.scene().network(), road, lane, car.x(), car.y());
+        if (next == null || !recognises(next)) {
+            return;
+        }
+        double d = Lanes.distanceToSquare(next, lane, car.x(), car.y());
+        if (d > sitcov.world.Dimensions.APPROACH_LENGTH) {
+            return;
+        }
+        intent.limit(APPROACH_SPEED + Math.sqrt(2 * Dynamics.BRAKING * Math.max(0, d - 5)));
+        if (held == next.id()) {
+            if (d <= 0) {
+                startCrossing(next, lane);
+                cross(intent);
+            } else {
+                intent.limit(entrySpeed(lane) + Dynamics.speedToStopWithin(d));
+            }
+            return;
+        }
+        if (d > Dynamics.stoppingDistance(car.speed()) + 2) {
+            return;
+        }
+        if (car.scene().occupancy().request(next.id(), car.id(), car.scene().tick(), PATIENCE)) {
+            if (held >= 0 && held != next.id()) {
+                car.scene().occupancy().release(held, car.id());
+            }
+            held = next.id();
+            arrival = lane;
+            exit = chooseExit(next);
+            intent.limit(entrySpeed(lane) + Dynamics.speedToStopWithin(d));
+            return;
+        }
+        waiting = true;
+        if (faults.isActive(Fault.CREEPS_WHILE_WAITING)) {
+            intent.crawl();
+            if (car.speed() > 0 || d > 0.5) {
+                faults.effective(Fault.CREEPS_WHILE_WAITING);
+            } else {
+                faults.reached(Fault.CREEPS_WHILE_WAITING);
+            }
+        } else {
+            intent.stopWithin(d - 0.5);
+        }
+    }
+
+    /** Fault 7: only the first half of the junctions (in map order) is recognised. */
+    private boolean recognises(Junction junction) {
+        if (!faults.isActive(Fault.HALF_THE_JUNCTIONS)) {
+            return true;
+        }
+        int half = car.scene().network().junctions().size() / 2;
+        if (junction.id() < half) {
+            faults.reached(Fault.HALF_THE_JUNCTIONS);
+            return true;
+        }
+        faults.effective(Fault.HALF_THE_JUNCTIONS);
+        return false;
+    }
+
+    private void startCrossing(Junction junction, Compass lane) {
+        arrival = lane;
+        var point = junction.exitPoint(exit, EXIT_BEYOND_SQUARE);
+        waypoint = car.waypoints().create(point.x(), point.y(), Waypoint.Kind.JUNCTION_EXIT);
+        Waypoint wp = car.waypoints().lookup(waypoint);
+        path = CrossingPath.between(car.x(), car.y(), arrival, wp.x(), wp.y(), exit, AutonomousCar.REAR_AXLE);
+        crossing = true;
+        exitsTaken[junction.id()][exit.ordinal()]++;
+    }
+
+    private void cross(Intent intent) {
+        Waypoint wp = car.waypoints().lookup(waypoint);
+        if (wp == null) {
+            crossing = false;
+            return;
+        }
+        // the crossing ends half-way along the path's tail beyond the waypoint, the car aligned with its lane
+        double beyond = (car.x() - wp.x()) * exit.dx() + (car.y() - wp.y()) * exit.dy();
+        if (beyond > CrossingPath.TAIL / 2) {
+            crossing = false;
+            car.waypoints().remove(waypoint);
+            car.setLane(exit);
+            return;
+        }
+        double[] aim = path.aim(car.x(), car.y());
+        intent.steer(Bearing.between(car.x(), car.y(), aim[0], aim[1]), "junction");
+        double speed = entrySpeed(arrival);
+        intent.limit(speed);
+        if (speed <= Dynamics.CRAWL_CEILING) {
+            intent.crawl();
+        }
+    }
+
+    /** How fast to enter and cross: straight on is quickest; left turns and U-turns crawl. */
+    private double entrySpeed(Compass lane) {
+        if (exit == lane) {
+            return STRAIGHT_SPEED;
+        }
+        if (exit == lane.right()) {
+            return RIGHT_TURN_SPEED;
+        }
+        return Dynamics.CRAWL_CEILING;
+    }
+
+    private Compass chooseExit(Junction junction) {
+        List<Compass> arms = junction.arms();
+        int[] taken = exitsTaken[junction.id()];
+        var target = car.scene().target().position();
+        for (int pass = 0; pass < 1000; pass++) {
+            Compass best = null;
+            double bestDistance = Double.MAX_VALUE;
+            for (Compass c : new Compass[] {Compass.EAST, Compass.SOUTH, Compass.WEST, Compass.NORTH}) {
+                if (!arms.contains(c)) {
+                    continue;
+                }
+                int count = taken[c.ordinal()];
+                boolean eligible = count == 0 || (pass > 0 && decisions.nextDouble() < Math.pow(0.8, count));
+                if (eligible) {
+                    double distance = junction.exitPoint(c, EXIT_BEYOND_SQUARE).distanceTo(target);
+                    if (distance < bestDistance) {
+                        best = c;
+                        bestDistance = distance;
+                    }
+                }
+            }
+            if (best != null) {
+                return best;
+            }
+        }
+        return arms.get(0);
+    }
+}

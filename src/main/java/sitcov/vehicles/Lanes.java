@@ -1,0 +1,70 @@
+package sitcov.vehicles;
+
+import sitcov.geom.Compass;
+import sitcov.world.Dimensions;
+import sitcov.world.Junction;
+import sitcov.world.Road;
+import sitcov.world.RoadNetwork;
+
+/** Ground-truth lane geometry: which road a car drives along, where its lane is, what junction is next. */
+final class Lanes {
+    private Lanes() {
+    }
+
+    /** +1 when "to the driver's right" is the road's increasing across coordinate, else −1. */
+    static int rightSign(Compass direction) {
+        Compass right = direction.right();
+        return right.dx() + right.dy();
+    }
+
+    /** +1 when driving {@code direction} increases the road's along coordinate, else −1. */
+    static int forwardSign(Compass direction) {
+        return direction.dx() + direction.dy();
+    }
+
+    /** A road holding the point whose axis runs along {@code direction}, or null. */
+    static Road roadAlong(RoadNetwork network, double x, double y, Compass direction) {
+        boolean northSouth = direction.isNorthSouth();
+        for (Road road : network.roads()) {
+            if (road.isNorthSouth() == northSouth && road.contains(x, y)) {
+                return road;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * How far the point is to the right of the centre of the lane for {@code direction} (negative:
+     * towards the kerb on the left).
+     */
+    static double offsetFromLaneCentre(Road road, Compass direction, double x, double y) {
+        return (road.across(x, y) - road.laneCentre(direction)) * rightSign(direction);
+    }
+
+    /** Distance ahead (along {@code direction}) from the point to the near edge of the junction square, which may be negative. */
+    static double distanceToSquare(Junction junction, Compass direction, double x, double y) {
+        double along = direction.isNorthSouth() ? y : x;
+        double centre = direction.isNorthSouth() ? junction.centre().y() : junction.centre().x();
+        return (centre - along) * forwardSign(direction) - Dimensions.HALF_ROAD;
+    }
+
+    /**
+     * The nearest junction on {@code road} whose square's far edge is still ahead of the point
+     * when driving {@code direction}, or null.
+     */
+    static Junction nextJunction(RoadNetwork network, Road road, Compass direction, double x, double y) {
+        Junction best = null;
+        double bestDistance = Double.MAX_VALUE;
+        for (Junction junction : network.junctions()) {
+            if (!road.carries(junction.centre())) {
+                continue;
+            }
+            double d = distanceToSquare(junction, direction, x, y);
+            if (d > -Dimensions.JUNCTION_SIZE && d < bestDistance) {
+                best = junction;
+                bestDistance = d;
+            }
+        }
+        return best;
+    }
+}

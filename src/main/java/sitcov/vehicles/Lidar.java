@@ -1,0 +1,114 @@
+package sitcov.vehicles;
+
+import sitcov.geom.Box;
+import sitcov.geom.Compass;
+import sitcov.geom.Rays;
+import sitcov.world.RoadNetwork;
+
+/**
+ * The obstacle LIDAR (reference §3.2b): 360 rays over 180° at 0.5°, sampled every 0.5 m up to
+ * 25 m. A ray stops at the first thing it hits — a parked car or a vehicle — so a car hidden
+ * behind another is not seen, and at the first sample off the road. Hits are reported in the
+ * lane frame: {@code u} metres ahead along the lane direction, {@code v} metres to its right.
+ * Reuses its buffers: one LIDAR per car, not thread-safe.
+ */
+final class Lidar {
+    static final double ARC = 180;
+    static final double RANGE = 25;
+    static final double ANGULAR_STEP = 0.5;
+    static final double RANGE_STEP = 0.5;
+    private static final int RAYS = (int) (ARC / ANGULAR_STEP);
+    private static final int MAX_OBJECTS = 64;
+
+    private final Box[] objects = new Box[MAX_OBJECTS];
+    private final boolean[] objectParked = new boolean[MAX_OBJECTS];
+    private final double[] interval = new double[2];
+    private final RoadReach roadReach;
+
+    private final double[] hitU = new double[RAYS];
+    private final double[] hitV = new double[RAYS];
+    private final boolean[] hitParked = new boolean[RAYS];
+    private int hits;
+
+    Lidar(RoadNetwork network) {
+        this.roadReach = new RoadReach(network);
+    }
+
+    /**
+     * Sweeps around {@code centreBearing} from ({@code x}, {@code y}); hits are expressed in the
+     * frame of {@code lane}. Returns the number of hits.
+     */
+    int sweep(double x, double y, double centreBearing, Compass lane, Scene scene, Vehicle self) {
+        hits = 0;
+        int n = 0;
+        double reachSq = (RANGE + 5) * (RANGE + 5);
+        for (Box body : scene.parkedBodies()) {
+            if (n < MAX_OBJECTS && distanceSq(body, x, y) <= reachSq) {
+                objectParked[n] = true;
+                objects[n++] = body;
+            }
+        }
+        for (Vehicle v : scene.vehicles()) {
+            if (v != self && v.isActive() && n < MAX_OBJECTS
+                    && (v.x() - x) * (v.x() - x) + (v.y() - y) * (v.y() - y) <= reachSq) {
+                objectParked[n] = false;
+                objects[n++] = v.footprint();
+            }
+        }
+        if (n == 0) {
+            return 0;
+        }
+        roadReach.gather(x, y, RANGE);
+        Compass right = lane.right();
+        Compass ahead = lane;
+        for (int ray = 0; ray < RAYS; ray++) {
+            double r = Math.toRadians(centreBearing - ARC / 2 + ray * ANGULAR_STEP);
+            double dx = Math.sin(r);
+            double dy = Math.cos(r);
+            double reach = Math.min(RANGE, roadReach.along(x, y, dx, dy));
+            double best = Double.NaN;
+            boolean parked = false;
+            for (int k = 0; k < n; k++) {
+                if (objects[k].rayInterval(x, y, dx, dy, interval)) {
+                    double d = Rays.firstSample(interval[0], interval[1], 0, RANGE_STEP, reach);
+                    if (!Double.isNaN(d) && (Double.isNaN(best) || d < best)) {
+                        best = d;
+                        parked = objectParked[k];
+                    }
+                }
+            }
+            if (!Double.isNaN(best)) {
+                double hx = best * dx;
+                double hy = best * dy;
+                hitU[hits] = hx * ahead.dx() + hy * ahead.dy();
+                hitV[hits] = hx * right.dx() + hy * right.dy();
+                hitParked[hits] = parked;
+                hits++;
+            }
+        }
+        return hits;
+    }
+
+    int hits() {
+        return hits;
+    }
+
+    double u(int hit) {
+        return hitU[hit];
+    }
+
+    double v(int hit) {
+        return hitV[hit];
+    }
+
+    boolean isParkedCar(int hit) {
+        return hitParked[hit];
+    }
+
+
+    private static double distanceSq(Box body, double x, double y) {
+        double cx = body.centre().x() - x;
+        double cy = body.centre().y() - y;
+        return cx * cx + cy * cy;
+    }
+}

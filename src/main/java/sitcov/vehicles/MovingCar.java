@@ -1,0 +1,330 @@
+package sitcov.vehicles;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.random.RandomGenerator;
+import sitcov.engine.SimState;
+import sitcov.engine.Steppable;
+import sitcov.geom.Bearing;
+import sitcov.geom.Box;
+import sitcov.geom.Compass;
+import sitcov.geom.Vec2;
+import sitcov.world.Dimensions;
+import sitcov.world.Junction;
+import sitcov.world.Road;
+import sitcov.world.StartPose;
+
+/**
+ * A moving car: a human driver who knows the map (ground truth). It keeps its lane, keeps its
+ * distance to whatever is ahead, passes parked cars when the other lane is clear, takes a random
+ * exit at junctions (U-turns allowed), and at a dead end turns back or leaves the map; a car that
+ * leaves is replaced by one entering at a random dead end.
+ */
+public final class MovingCar implements Vehicle, Steppable {
+    /** The stream exits at junctions are drawn from. */
+    public static final String CHOICES_STREAM = "traffic.choices";
+    /** The stream replacement cars' dead ends are drawn from. */
+    public static final String RESPAWNS_STREAM = "traffic.respawns";
+    static final long PATIENCE = 30;
+    static final double APPROACH_SPEED = 1.0;
+    static final double JUNCTION_SPEED = 0.5;
+    static final double U_TURN_SPEED = 0.3;
+    static final double LOOKAHEAD = 5;
+    static final double GAP = 2;
+    /** Ticks standing still after which the driver stops waiting for other standing moving cars. */
+    static final int IMPATIENCE = 40;
+    /** Its rear axle, which it turns about, is this far behind its front. */
+    static final double REAR_AXLE = 3.5;
+
+    private final int id;
+    private final Scene scene;
+    private final RandomGenerator choices;
+    private final RandomGenerator respawns;
+    private final Body body;
+    private boolean active = true;
+    private Compass lane;
+    private int held = -1;
+    private Compass exit;
+    private boolean crossing;
+    private boolean leaving;
+    private double waypointX;
+    private double waypointY;
+    private boolean passing;
+    private double passEnd;
+    private int stoppedFor;
+
+    MovingCar(int id, Scene scene, StartPose start, RandomGenerator choices, RandomGenerator respawns) {
+        this.id = id;
+        this.scene = scene;
+        this.choices = choices;
+        this.respawns = respawns;
+        this.body = new Body(start.position().x(), start.position().y(), start.heading().bearing(), REAR_AXLE);
+        this.lane = start.heading();
+    }
+
+    @Override
+    public void step(SimState state) {
+        if (!active) {
+            reenter();
+            return;
+        }
+        if (hasLeftTheRoads()) {
+            scene.occupancy().releaseAll(id);
+            held = -1;
+            crossing = false;
+            active = false;
+            return;
+        }
+        double limit = Dynamics.MAX_SPEED;
+        double bearing = body.heading();
+        if (crossing) {
+            limit = Math.min(limit, exit == lane.opposite() ? U_TURN_SPEED : JUNCTION_SPEED);
+            bearing = Bearing.between(body.x(), body.y(), waypointX, waypointY);
+            boolean passed = (body.x() - waypointX) * exit.dx() + (body.y() - waypointY) * exit.dy() > 0;
+            if (Math.hypot(body.x() - waypointX, body.y() - waypointY) < 1 || passed) {
+                crossing = false;
+                lane = exit;
+            }
+        } else {
+            Road road = Lanes.roadAlong(scene.network(), body.x(), body.y(), lane);
+            if (road != null) {
+                limit = Math.min(limit, approachJunction(road));
+                if (!crossing) {
+                    limit = Math.min(limit, parkedCars(road));
+                    bearing = laneBearing(road);
+                }
+            }
+        }
+        limit = Math.min(limit, keepDistance(stoppedFor > IMPATIENCE));
+        stoppedFor = body.speed() == 0 ? stoppedFor + 1 : 0;
+        releaseJunctionIfLeft();
+        body.approachSpeed(limit);
+        body.turnTowards(bearing, Dynamics.MAX_TURN);
+        body.move();
+    }
+
+    private double approachJunction(Road road) {
+        Junction next = Lanes.nextJunction(scene.network(), road, lane, body.x(), body.y());
+        if (next == null) {
+            return Dynamics.MAX_SPEED;
+        }
+        double d = Lanes.distanceToSquare(next, lane, body.x(), body.y());
+        double limit = APPROACH_SPEED + Math.sqrt(2 * Dynamics.BRAKING * Math.max(0, d - 5));
+        if (held == next.id()) {
+            if (d <= 0) {
+                startCrossing(next);
+                return JUNCTION_SPEED;
+            }
+            return Math.min(limit, JUNCTION_SPEED + Math.sqrt(2 * Dynamics.BRAKING * d));
+        }
+        if (d > Dynamics.stoppingDistance(body.speed()) + 2) {
+            return limit;
+        }
+        if (scene.occupancy().request(next.id(), id, scene.tick(), PATIENCE)) {
+            if (held >= 0) {
+                scene.occupancy().release(held, id);
+            }
+            held = next.id();
+            return Math.min(limit, JUNCTION_SPEED + Math.sqrt(2 * Dynamics.BRAKING * Math.max(0, d)));
+        }
+        return Dynamics.speedToStopWithin(d - 0.5);
+    }
+
+    private void startCrossing(Junction junction) {
+        List<Compass> options = new ArrayList<>(junction.arms());
+        if (junction.isDeadEnd()) {
+            options.add(lane);
+        }
+        exit = options.get(choices.nextInt(options.size()));
+        leaving = !junction.hasArm(exit);
+        Vec2 point = leaving
+                ? junction.exitPoint(exit, 12)
+                : junction.exitPoint(exit, 1);
+        waypointX = point.x();
+        waypointY = point.y();
+        crossing = true;
+    }
+
+    private void releaseJunctionIfLeft() {
+        if (held >= 0 && !crossing) {
+            Junction j = scene.network().junctions().get(held);
+            if (!footprint().overlaps(j.square())) {
+                scene.occupancy().release(held, id);
+                held = -1;
+            }
+        }
+    }
+
+    /** Stops behind a parked car in its lane, or passes it when the other lane is clear. */
+    private double parkedCars(Road road) {
+        int sign = Lanes.forwardSign(lane);
+        double along = road.along(body.x(), body.y());
+        if (passing && (along - passEnd) * sign > 0) {
+            passing = false;
+        }
+        double nearest = Double.MAX_VALUE;
+        double end = Double.NaN;
+        for (var car : scene.parkedCars()) {
+            if (car.roadId() != road.id() || road.laneDirectionAt(car.centre().x(), car.centre().y()) != lane) {
+                continue;
+            }
+            double ahead = (road.along(car.centre().x(), car.centre().y()) - along) * sign;
+            if (ahead + Dimensions.CAR_LENGTH / 2 > 0 && ahead - Dimensions.CAR_LENGTH / 2 < nearest) {
+                nearest = ahead - Dimensions.CAR_LENGTH / 2;
+                end = ahead + Dimensions.CAR_LENGTH / 2;
+            }
+        }
+        if (passing || nearest > 20) {
+            if (passing && nearest < 20) {
+                passEnd = along + sign * Math.max((passEnd - along) * sign, end + 4);
+            }
+            return Dynamics.MAX_SPEED;
+        }
+        if (otherLaneClear(road, along, sign, nearest, end + 8)) {
+            passing = true;
+            passEnd = along + sign * (end + 4);
+            return 1.5;
+        }
+        return Dynamics.speedToStopWithin(nearest - 3);
+    }
+
+    private boolean otherLaneClear(Road road, double along, int sign, double from, double to) {
+        Compass other = lane.opposite();
+        for (var car : scene.parkedCars()) {
+            if (car.roadId() == road.id() && road.laneDirectionAt(car.centre().x(), car.centre().y()) == other) {
+                double ahead = (road.along(car.centre().x(), car.centre().y()) - along) * sign;
+                if (ahead > from - 8 && ahead < to + 3) {
+                    return false;
+                }
+            }
+        }
+        Junction next = Lanes.nextJunction(scene.network(), road, lane, body.x(), body.y());
+        if (next != null && Lanes.distanceToSquare(next, lane, body.x(), body.y()) < to + 3) {
+            return false;
+        }
+        for (Vehicle v : scene.vehicles()) {
+            if (v == this || !v.isActive() || !road.contains(v.x(), v.y())) {
+                continue;
+            }
+            double ahead = (road.along(v.x(), v.y()) - along) * sign;
+            boolean inOtherLane = road.laneDirectionAt(v.x(), v.y()) == other;
+            if (inOtherLane && ahead > -8 && ahead < to + 60) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private double laneBearing(Road road) {
+        double across = road.laneCentre(lane) + (passing ? Lanes.rightSign(lane) * Dimensions.LANE_WIDTH : 0);
+        double along = road.along(body.x(), body.y()) + Lanes.forwardSign(lane) * LOOKAHEAD;
+        Vec2 aim = road.point(along, across);
+        return Bearing.between(body.x(), body.y(), aim.x(), aim.y());
+    }
+
+    /**
+     * Keeps a stopping distance to any vehicle in its path (ground truth). After waiting long, an
+     * impatient driver stops heeding other standing moving cars (their mishaps are not the system
+     * under test's), which breaks gridlock; it always heeds the autonomous car.
+     */
+    private double keepDistance(boolean impatient) {
+        double fx = Bearing.dx(body.heading());
+        double fy = Bearing.dy(body.heading());
+        double limit = Dynamics.MAX_SPEED;
+        for (Vehicle other : scene.vehicles()) {
+            if (other == this || !other.isActive()
+                    || (impatient && other.speed() == 0 && other.id() != AutonomousCar.ID)) {
+                continue;
+            }
+            double delta = Math.toRadians(other.heading() - body.heading());
+            double halfL = other.length() / 2;
+            double cx = other.x() - halfL * Bearing.dx(other.heading()) - body.x();
+            double cy = other.y() - halfL * Bearing.dy(other.heading()) - body.y();
+            double u = cx * fx + cy * fy;
+            double v = cx * fy - cy * fx;
+            double extentU = Math.abs(Math.cos(delta)) * halfL + Math.abs(Math.sin(delta)) * other.width() / 2;
+            double extentV = Math.abs(Math.sin(delta)) * halfL + Math.abs(Math.cos(delta)) * other.width() / 2;
+            double corridor = 1.3;
+            if (u < 0 || u > 40 || Math.abs(v) > extentV + corridor) {
+                continue;
+            }
+            double gap = u - extentU;
+            double lead = other.speed() * Math.cos(delta);
+            double room = lead >= 0 ? gap + Dynamics.stoppingDistance(lead) - lead - GAP : gap - GAP + 4 * lead;
+            limit = Math.min(limit, Dynamics.speedToStopWithin(room));
+        }
+        return limit;
+    }
+
+    private boolean hasLeftTheRoads() {
+        Box body = footprint();
+        return scene.network().surfaces().stream().noneMatch(body::overlaps);
+    }
+
+    /** Enters again at a random dead end, if its square is free. */
+    private void reenter() {
+        List<Junction> deadEnds = scene.network().junctions().stream().filter(Junction::isDeadEnd).toList();
+        if (deadEnds.isEmpty()) {
+            return;
+        }
+        Junction j = deadEnds.get(respawns.nextInt(deadEnds.size()));
+        Compass into = j.arms().get(0);
+        Vec2 entry = j.exitPoint(into, -Dimensions.JUNCTION_SIZE / 2 - 0.1);
+        Box candidate = Box.behind(entry.x(), entry.y(), into.bearing(), length(), width());
+        if (scene.occupancy().holder(j.id()) >= 0) {
+            return;
+        }
+        for (Vehicle v : scene.vehicles()) {
+            if (v != this && v.isActive() && v.footprint().overlaps(candidate.bounds().expanded(2))) {
+                return;
+            }
+        }
+        body.place(entry.x(), entry.y(), into.bearing());
+        lane = into;
+        active = true;
+        passing = false;
+        crossing = false;
+        scene.occupancy().request(j.id(), id, scene.tick(), PATIENCE);
+        held = j.id();
+    }
+
+    @Override
+    public int id() {
+        return id;
+    }
+
+    @Override
+    public double x() {
+        return body.x();
+    }
+
+    @Override
+    public double y() {
+        return body.y();
+    }
+
+    @Override
+    public double heading() {
+        return body.heading();
+    }
+
+    @Override
+    public double speed() {
+        return body.speed();
+    }
+
+    @Override
+    public double length() {
+        return Dimensions.CAR_LENGTH;
+    }
+
+    @Override
+    public double width() {
+        return Dimensions.CAR_WIDTH;
+    }
+
+    @Override
+    public boolean isActive() {
+        return active;
+    }
+}

@@ -1,0 +1,224 @@
+package sitcov.vehicles;
+
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSwitchboard;
+import sitcov.geom.Bearing;
+import sitcov.geom.Compass;
+
+/**
+ * Passing parked cars (reference §3.7): seeing a parked car ahead in its lane, the car pulls out
+ * only if the oncoming lane is predicted clear for the whole manoeuvre, otherwise it waits
+ * behind. It passes the whole row it can see — the LIDAR cannot see through the first car, so the
+ * row is re-examined once pulled out — and pulls back in before anything parked on the other side.
+ */
+final class Overtaker {
+    static final double HEADWAY = 7;
+    static final double BUFFER = 2;
+    static final double PULL_OUT = 2.5;
+    static final double WAIT_GAP = 4.5;
+    static final double PASSING_SPEED = 1.5;
+    static final double TIGHT_SPEED = 0.6;
+    static final double PARKED_CAR_LENGTH = 5;
+    static final double SAFETY_MARGIN = 8;
+
+    private final AutonomousCar car;
+    private final FaultSwitchboard faults;
+    private OvertakingStage stage = OvertakingStage.NOT_OVERTAKING;
+    private int waypoint;
+    private double oppositeStart = Double.NaN;
+    private Compass lane;
+
+    Overtaker(AutonomousCar car, FaultSwitchboard faults) {
+        this.car = car;
+        this.faults = faults;
+    }
+
+    OvertakingStage stage() {
+        return stage;
+    }
+
+    void plan(Intent intent, Compass currentLane, double laneCentre) {
+        if (stage.isPassing()) {
+            pass(intent, laneCentre);
+            return;
+        }
+        lane = currentLane;
+        Sighting s = look(laneCentre, false);
+        if (Double.isNaN(s.nearest) || s.nearest > Lidar.RANGE) {
+            stage = OvertakingStage.NOT_OVERTAKING;
+            return;
+        }
+        intent.stopWithin(s.nearest - WAIT_GAP);
+        if (s.nearest > HEADWAY + car.speed()) {
+            return;
+        }
+        double passEnd = Math.max(s.farthest, s.nearest + PARKED_CAR_LENGTH) + BUFFER + 1;
+        double finish = passEnd + HEADWAY;
+        boolean tight = false;
+        if (!Double.isNaN(s.opposite) && s.opposite < finish + BUFFER) {
+            if (s.opposite < passEnd + 2.5) {
+                stage = OvertakingStage.WAITING;
+                return;
+            }
+            finish = s.opposite - 1;
+            tight = true;
+        }
+        if (!oncomingLaneClear(laneCentre, finish)) {
+            stage = OvertakingStage.WAITING;
+            return;
+        }
+        // remembered as a coordinate along the road, so it stays put while the car moves
+        oppositeStart = tight ? along() + s.opposite * Lanes.forwardSign(lane) : Double.NaN;
+        double u = Math.max(1.5, s.nearest - BUFFER);
+        waypoint = createWaypoint(u, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_START);
+        stage = OvertakingStage.START;
+        pass(intent, laneCentre);
+    }
+
+    private void pass(Intent intent, double laneCentre) {
+        Waypoint wp = car.waypoints().lookup(waypoint);
+        if (wp == null) {
+            end();
+            return;
+        }
+        intent.limit(Double.isNaN(oppositeStart) ? PASSING_SPEED : TIGHT_SPEED);
+        double ahead = LaneFrame.u(lane, car.x(), car.y(), wp.x(), wp.y());
+        if (ahead <= Math.max(1, car.speed() / 2)) {
+            advance(laneCentre, wp);
+            wp = car.waypoints().lookup(waypoint);
+            if (wp == null || stage == OvertakingStage.NOT_OVERTAKING) {
+                return;
+            }
+        }
+        double bearing = Bearing.between(car.x(), car.y(), wp.x(), wp.y());
+        if (faults.isActive(Fault.STOPS_TURNING_WHILE_OVERTAKING)) {
+            if (Math.abs(Bearing.turn(car.heading(), bearing)) > 1e-9) {
+                faults.effective(Fault.STOPS_TURNING_WHILE_OVERTAKING);
+            } else {
+                faults.reached(Fault.STOPS_TURNING_WHILE_OVERTAKING);
+            }
+            bearing = car.heading();
+        }
+        intent.steer(bearing, "overtaking");
+    }
+
+    private void advance(double laneCentre, Waypoint reached) {
+        switch (stage) {
+            case START -> {
+                Sighting s = look(laneCentre, true);
+                double farthest = Double.isNaN(s.farthest) ? PARKED_CAR_LENGTH : s.farthest;
+                if (faults.isActive(Fault.SECOND_PULL_OUT) && farthest > 6) {
+                    faults.effective(Fault.SECOND_PULL_OUT);
+                    replace(farthest - BUFFER, LaneFrame.v(lane, car.x(), car.y(), reached.x(), reached.y()) + PULL_OUT,
+                            Waypoint.Kind.OVERTAKE_START);
+                    return;
+                }
+                replace(farthest + BUFFER + 1, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
+                stage = OvertakingStage.PULLED_OUT;
+            }
+            case PULLED_OUT -> {
+                Sighting s = look(laneCentre, true);
+                if (!Double.isNaN(s.farthest) && s.farthest > 0) {
+                    // another parked car came into view beyond the one passed: keep passing
+                    replace(s.farthest + BUFFER + 1, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
+                    return;
+                }
+                double back = HEADWAY;
+                if (!Double.isNaN(oppositeStart)) {
+                    back = Math.max(2.5, Math.min(HEADWAY, oppositeRemaining() - 1));
+                }
+                replace(back, laneCentre, Waypoint.Kind.OVERTAKE_FINISH);
+                stage = OvertakingStage.FINISH;
+            }
+            case FINISH -> end();
+            default -> {
+                // not passing: nothing to advance
+            }
+        }
+    }
+
+    /** Metres from the car to the parked car on the other side that the pass must end before. */
+    private double oppositeRemaining() {
+        return (oppositeStart - along()) * Lanes.forwardSign(lane);
+    }
+
+    private double along() {
+        return lane.isNorthSouth() ? car.y() : car.x();
+    }
+
+    private void end() {
+        car.waypoints().remove(waypoint);
+        stage = OvertakingStage.NOT_OVERTAKING;
+        oppositeStart = Double.NaN;
+    }
+
+    private void replace(double u, double v, Waypoint.Kind kind) {
+        car.waypoints().remove(waypoint);
+        waypoint = createWaypoint(u, v, kind);
+    }
+
+    private int createWaypoint(double u, double v, Waypoint.Kind kind) {
+        return car.waypoints().create(LaneFrame.x(lane, car.x(), u, v), LaneFrame.y(lane, car.y(), u, v), kind);
+    }
+
+    private boolean oncomingLaneClear(double laneCentre, double finish) {
+        TrafficSensor traffic = car.traffic();
+        double speed = traffic.oncomingSpeed();
+        if (faults.isActive(Fault.ONCOMING_AT_HALF_SPEED) && Double.isFinite(traffic.oncomingGap())) {
+            faults.effective(Fault.ONCOMING_AT_HALF_SPEED);
+            speed /= 2;
+        }
+        double ticks = ticksToTravel(finish);
+        boolean clearOfOncoming = traffic.oncomingGap() - speed * ticks > finish + SAFETY_MARGIN;
+        return clearOfOncoming && !traffic.otherLaneOccupied();
+    }
+
+    /** Ticks to travel {@code distance} from the current speed, accelerating up to the passing speed. */
+    private double ticksToTravel(double distance) {
+        double v = car.speed();
+        double covered = 0;
+        int ticks = 0;
+        while (covered < distance && ticks < 1000) {
+            double next = Math.min(PASSING_SPEED, v + Dynamics.ACCELERATION);
+            covered += (v + next) / 2;
+            v = next;
+            ticks++;
+        }
+        return ticks;
+    }
+
+    /** What the LIDAR shows of parked cars, in the lane frame. */
+    private record Sighting(double nearest, double farthest, double opposite) {
+    }
+
+    private Sighting look(double laneCentre, boolean passing) {
+        double centre = lane.bearing();
+        if (passing && faults.isActive(Fault.OBSTACLE_SEARCH_ALONG_HEADING)) {
+            if (Math.abs(Bearing.turn(centre, car.heading())) > 1e-9) {
+                faults.effective(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
+            } else {
+                faults.reached(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
+            }
+            centre = car.heading();
+        }
+        Lidar lidar = car.lidar();
+        int hits = lidar.sweep(car.x(), car.y(), centre, lane, car.scene(), car);
+        double nearest = Double.NaN;
+        double farthest = Double.NaN;
+        double opposite = Double.NaN;
+        for (int h = 0; h < hits; h++) {
+            if (!lidar.isParkedCar(h)) {
+                continue;
+            }
+            double u = lidar.u(h);
+            double v = lidar.v(h);
+            if (u > 0 && v > laneCentre - 1.4 && v < laneCentre + 1.4) {
+                nearest = Double.isNaN(nearest) ? u : Math.min(nearest, u);
+                farthest = Double.isNaN(farthest) ? u : Math.max(farthest, u);
+            } else if (u > -2 && v > laneCentre + 1.6 && v < laneCentre + 4.4) {
+                opposite = Double.isNaN(opposite) ? u : Math.min(opposite, u);
+            }
+        }
+        return new Sighting(nearest, farthest, opposite);
+    }
+}

@@ -1,0 +1,59 @@
+package sitcov.vehicles;
+
+import sitcov.geom.Rect;
+import sitcov.world.RoadNetwork;
+
+/**
+ * How far a sensor ray stays on the road surface before its first gap: sensors' rays stop where
+ * they leave the road. Gathers the roads near the sensor once per sweep, then answers per ray
+ * without allocating.
+ */
+final class RoadReach {
+    private static final int MAX_ROADS = 64;
+
+    private final RoadNetwork network;
+    private final Rect[] roads = new Rect[MAX_ROADS];
+    private final double[] interval = new double[2];
+    private final double[] start = new double[MAX_ROADS];
+    private final double[] end = new double[MAX_ROADS];
+    private int n;
+
+    RoadReach(RoadNetwork network) {
+        this.network = network;
+    }
+
+    /** Keeps the road surfaces within {@code radius} of the sensor for the rays that follow. */
+    void gather(double x, double y, double radius) {
+        n = 0;
+        for (Rect surface : network.surfaces()) {
+            if (n < MAX_ROADS && surface.minX() <= x + radius && surface.maxX() >= x - radius
+                    && surface.minY() <= y + radius && surface.maxY() >= y - radius) {
+                roads[n++] = surface;
+            }
+        }
+    }
+
+    /** The distance along the unit ray from the sensor that the gathered roads cover without a gap. */
+    double along(double x, double y, double dx, double dy) {
+        int m = 0;
+        for (int k = 0; k < n; k++) {
+            if (roads[k].rayInterval(x, y, dx, dy, interval)) {
+                start[m] = interval[0];
+                end[m] = interval[1];
+                m++;
+            }
+        }
+        double reach = 0;
+        boolean grew = true;
+        while (grew) {
+            grew = false;
+            for (int k = 0; k < m; k++) {
+                if (start[k] <= reach + 1e-9 && end[k] > reach) {
+                    reach = end[k];
+                    grew = true;
+                }
+            }
+        }
+        return reach;
+    }
+}

@@ -1,0 +1,123 @@
+package sitcov.vehicles;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.random.RandomGenerator;
+import sitcov.engine.SimState;
+import sitcov.faults.FaultSwitchboard;
+import sitcov.geom.Box;
+import sitcov.world.Layout;
+import sitcov.world.ParkedCar;
+import sitcov.world.RoadNetwork;
+import sitcov.world.StartPose;
+import sitcov.world.Target;
+import sitcov.world.WorldMap;
+
+/**
+ * Everything the vehicles of one run share: the road network, the parked cars, the Target, the
+ * junction locks, and the vehicles themselves. Sensors read it; only the vehicles change it.
+ */
+public final class Scene {
+    /** Vehicles step at ordering 0; whoever watches them (the accident detector) steps after, at 1. */
+    public static final int VEHICLE_ORDERING = 0;
+
+    private final WorldMap map;
+    private final RoadNetwork network;
+    private final List<ParkedCar> parkedCars;
+    private final List<Box> parkedBodies;
+    private final JunctionOccupancy occupancy;
+    private final SimState state;
+    private final List<MovingCar> movingCars = new ArrayList<>();
+    private final List<Vehicle> vehicles = new ArrayList<>();
+    private AutonomousCar autonomousCar;
+
+    Scene(WorldMap map, SimState state) {
+        this.map = map;
+        Layout layout = map.layout();
+        this.network = RoadNetwork.of(layout);
+        this.parkedCars = layout.parkedCars();
+        this.parkedBodies = parkedCars.stream().map(ParkedCar::footprint).toList();
+        this.occupancy = new JunctionOccupancy(layout.junctions().size());
+        this.state = state;
+    }
+
+    /**
+     * Builds the scene of {@code map} for one run: the autonomous car at its start (with the given
+     * faults) and a moving car at each moving-car start, all scheduled every tick from tick 0.
+     */
+    public static Scene start(WorldMap map, SimState state, FaultSwitchboard faults) {
+        Scene scene = new Scene(map, state);
+        StartPose start = map.layout().carStart()
+                .orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no start for the car"));
+        map.layout().target().orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no Target"));
+        AutonomousCar car = new AutonomousCar(scene, start, faults, state.random(AutonomousCar.DECISIONS_STREAM));
+        scene.setAutonomousCar(car);
+        state.schedule().scheduleRepeating(0, VEHICLE_ORDERING, 1, car);
+        RandomGenerator choices = state.random(MovingCar.CHOICES_STREAM);
+        RandomGenerator respawns = state.random(MovingCar.RESPAWNS_STREAM);
+        int id = AutonomousCar.ID + 1;
+        for (StartPose pose : map.movingCars()) {
+            MovingCar moving = new MovingCar(id++, scene, pose, choices, respawns);
+            scene.addMovingCar(moving);
+            state.schedule().scheduleRepeating(0, VEHICLE_ORDERING, 1, moving);
+        }
+        return scene;
+    }
+
+    public WorldMap map() {
+        return map;
+    }
+
+    public RoadNetwork network() {
+        return network;
+    }
+
+    public List<ParkedCar> parkedCars() {
+        return parkedCars;
+    }
+
+    /** Parked-car footprints, in parked-car order. */
+    public List<Box> parkedBodies() {
+        return parkedBodies;
+    }
+
+    public Target target() {
+        return map.layout().target().orElseThrow(() -> new IllegalStateException("the map has no Target"));
+    }
+
+    public JunctionOccupancy occupancy() {
+        return occupancy;
+    }
+
+    public long tick() {
+        return state.tick();
+    }
+
+    public SimState state() {
+        return state;
+    }
+
+    public AutonomousCar autonomousCar() {
+        return autonomousCar;
+    }
+
+    public List<MovingCar> movingCars() {
+        return Collections.unmodifiableList(movingCars);
+    }
+
+    /** Every vehicle, the autonomous car first; check {@link Vehicle#isActive()} before using one. */
+    public List<Vehicle> vehicles() {
+        return Collections.unmodifiableList(vehicles);
+    }
+
+    void setAutonomousCar(AutonomousCar car) {
+        this.autonomousCar = car;
+        vehicles.add(0, car);
+    }
+
+    void addMovingCar(MovingCar car) {
+        movingCars.add(car);
+        vehicles.add(car);
+    }
+}

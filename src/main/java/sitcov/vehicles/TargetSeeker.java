@@ -1,0 +1,66 @@
+package sitcov.vehicles;
+
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSwitchboard;
+import sitcov.geom.Bearing;
+import sitcov.geom.Compass;
+import sitcov.world.Target;
+
+/**
+ * Reaching the Target: once it is a short way ahead and in the car's own lane (judged from the
+ * markings the camera sees), the car steers towards it, keeping its body in the lane, and stops
+ * on it. It counts as reached within 1.5 m, in the car's own lane.
+ */
+final class TargetSeeker {
+    static final double CAPTURE_DISTANCE = 1.5;
+    static final double SEEK_DISTANCE = 15;
+    static final double DIRECT_DISTANCE = 4.5;
+    /** How far the car's front centre may move off its lane centre and keep its body in the lane. */
+    static final double LATERAL_FREEDOM = 0.45;
+
+    private final AutonomousCar car;
+    private final FaultSwitchboard faults;
+
+    TargetSeeker(AutonomousCar car, FaultSwitchboard faults) {
+        this.car = car;
+        this.faults = faults;
+    }
+
+    void plan(Intent intent, Compass lane, LaneEstimate estimate) {
+        Target target = car.scene().target();
+        double u = LaneFrame.u(lane, car.x(), car.y(), target.position().x(), target.position().y());
+        double v = LaneFrame.v(lane, car.x(), car.y(), target.position().x(), target.position().y());
+        if (u < -1 || u > SEEK_DISTANCE) {
+            return;
+        }
+        double laneCentre = estimate.laneCentre();
+        if (!inLane(v, laneCentre)) {
+            if (u <= DIRECT_DISTANCE && faults.isActive(Fault.TARGET_LANE_CHECK_SKIPPED)) {
+                faults.effective(Fault.TARGET_LANE_CHECK_SKIPPED);
+                intent.stopWithin(Math.max(0, u));
+                intent.steer(Bearing.between(car.x(), car.y(), target.position().x(), target.position().y()), "target");
+            }
+            return;
+        }
+        if (u <= DIRECT_DISTANCE && faults.isActive(Fault.TARGET_LANE_CHECK_SKIPPED)) {
+            faults.reached(Fault.TARGET_LANE_CHECK_SKIPPED);
+        }
+        intent.stopWithin(Math.max(0, u));
+        double aim = Math.max(laneCentre - LATERAL_FREEDOM, Math.min(laneCentre + LATERAL_FREEDOM, v));
+        intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(aim, Math.max(2, u))), "target");
+    }
+
+    /** Whether the car now stands on the Target, in its own lane. */
+    boolean isReached(Compass lane, LaneEstimate estimate) {
+        Target target = car.scene().target();
+        if (target.position().distanceTo(car.x(), car.y()) >= CAPTURE_DISTANCE) {
+            return false;
+        }
+        double v = LaneFrame.v(lane, car.x(), car.y(), target.position().x(), target.position().y());
+        return inLane(v, estimate.laneCentre());
+    }
+
+    private static boolean inLane(double v, double laneCentre) {
+        return v > laneCentre - 1.6 && v < laneCentre + 1.6;
+    }
+}

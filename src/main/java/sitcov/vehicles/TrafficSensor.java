@@ -1,0 +1,109 @@
+package sitcov.vehicles;
+
+import sitcov.geom.Bearing;
+import sitcov.geom.Compass;
+
+/**
+ * The moving-vehicle sensor (a radar, reference §3.2c): it sees vehicles up to 100 m away within
+ * a forward field (45°, or 180° within 25 m), measures where they are and how fast they move, and
+ * sorts them into those in the car's own path and those in the oncoming lane. Results are kept
+ * in fields until the next scan; nothing is allocated.
+ */
+final class TrafficSensor {
+    static final double RANGE = 100;
+    static final double NEAR_RANGE = 25;
+    static final double FIELD = 45;
+    /** Half the corridor a 2 m car sweeps, plus a margin. */
+    static final double PATH_HALF_WIDTH = 1.3;
+
+    private double pathGap;
+    private double pathSpeed;
+    private double oncomingGap;
+    private double oncomingSpeed;
+    private boolean otherLaneOccupied;
+
+    /**
+     * Scans from the car at ({@code x}, {@code y}) heading {@code heading}, with the lane
+     * running {@code lane} and its centre {@code laneCentre} metres to the car's right. Other-lane
+     * vehicles between {@code fromU} and {@code toU} metres ahead mark the other lane occupied.
+     */
+    void scan(Scene scene, Vehicle self, double x, double y, double heading, Compass lane, double laneCentre,
+              double fromU, double toU) {
+        pathGap = Double.POSITIVE_INFINITY;
+        pathSpeed = 0;
+        oncomingGap = Double.POSITIVE_INFINITY;
+        oncomingSpeed = 0;
+        otherLaneOccupied = false;
+        double fx = lane.dx();
+        double fy = lane.dy();
+        double rx = lane.right().dx();
+        double ry = lane.right().dy();
+        for (Vehicle other : scene.vehicles()) {
+            if (other == self || !other.isActive()) {
+                continue;
+            }
+            double delta = Math.toRadians(other.heading() - lane.bearing());
+            double c = Math.abs(Math.cos(delta));
+            double s = Math.abs(Math.sin(delta));
+            double halfL = other.length() / 2;
+            double halfW = other.width() / 2;
+            double cx = other.x() - halfL * Bearing.dx(other.heading()) - x;
+            double cy = other.y() - halfL * Bearing.dy(other.heading()) - y;
+            double u = cx * fx + cy * fy;
+            double v = cx * rx + cy * ry;
+            double extentU = c * halfL + s * halfW;
+            double extentV = s * halfL + c * halfW;
+            double distance = Math.hypot(cx, cy);
+            if (distance > RANGE + extentU || !inField(cx, cy, heading, distance)) {
+                continue;
+            }
+            double along = other.speed() * Math.cos(delta);
+            double gap = u - extentU;
+            if (gap > -1 && Math.abs(v) < extentV + PATH_HALF_WIDTH && gap < pathGap) {
+                pathGap = Math.max(0, gap);
+                pathSpeed = along;
+            }
+            boolean inOtherLane = v + extentV > laneCentre + 1.6 && v - extentV < laneCentre + 4.4;
+            if (inOtherLane) {
+                if (u + extentU > fromU && gap < toU) {
+                    otherLaneOccupied = true;
+                }
+                if (along < 0.05 && gap > -2 && gap < oncomingGap) {
+                    oncomingGap = Math.max(0, gap);
+                    oncomingSpeed = -along;
+                }
+            }
+        }
+    }
+
+    private static boolean inField(double cx, double cy, double heading, double distance) {
+        if (distance <= NEAR_RANGE) {
+            return Math.abs(Bearing.turn(heading, Bearing.between(0, 0, cx, cy))) <= 90;
+        }
+        return Math.abs(Bearing.turn(heading, Bearing.between(0, 0, cx, cy))) <= FIELD / 2;
+    }
+
+    /** Distance to the nearest vehicle in the car's path (infinite if none). */
+    double pathGap() {
+        return pathGap;
+    }
+
+    /** That vehicle's speed along the lane direction (negative when it comes towards the car). */
+    double pathSpeed() {
+        return pathSpeed;
+    }
+
+    /** Distance to the nearest vehicle coming the other way in the oncoming lane. */
+    double oncomingGap() {
+        return oncomingGap;
+    }
+
+    /** Its speed towards the car. */
+    double oncomingSpeed() {
+        return oncomingSpeed;
+    }
+
+    boolean otherLaneOccupied() {
+        return otherLaneOccupied;
+    }
+}

@@ -106,7 +106,7 @@ public final class AutonomousCar implements Vehicle, Steppable {
         double room = lead >= 0
                 ? gap + Dynamics.stoppingDistance(lead) - lead - 2
                 : gap - 2 + 4 * lead;
-        intent.stopWithin(room);
+        intent.stopWithin(room, "traffic");
     }
 
     /** Steers to the lane centre the camera sees, a lookahead ahead; straight on when it sees none. */
@@ -193,6 +193,11 @@ public final class AutonomousCar implements Vehicle, Steppable {
     /** Where it believes its lane centre is, metres to its right. */
     public double believedLaneCentre() {
         return estimate.laneCentre();
+    }
+
+    /** Which behaviour set the speed limit in the last tick (null when none did). */
+    public String limitedBy() {
+        return intent.limitedBy();
     }
 
     /** Which behaviour steered in the last tick. */

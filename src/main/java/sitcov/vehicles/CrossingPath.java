@@ -1,75 +1,123 @@
 package sitcov.vehicles;
 
 import java.util.Arrays;
+import sitcov.geom.Bearing;
 import sitcov.geom.Compass;
 
 /**
  * The path of the car's front through a junction square, from where it entered to its exit
  * waypoint and a short straight beyond. The car turns about its rear axle, so the path is planned
- * for the axle: straight to where the incoming and outgoing lane centres cross, a turn there, and
- * straight out (a half circle across the road for a U-turn); the front's path is the axle's moved
- * forward by the axle distance. The car follows it by pure pursuit, steering at the path point a
- * short lookahead ahead.
+ * for the axle and the front's path is the axle's moved forward by the axle distance:
+ * <ul>
+ * <li>straight on: a straight line;</li>
+ * <li>a turn: straight to where the incoming and outgoing lane centres cross, an arc round that
+ * corner, straight out — a left turn's arc is centred on the kerb corner, so the body's inside
+ * keeps off it, a right turn's is as wide as the square, so the front's outer corner stays on the road;</li>
+ * <li>a U-turn: across to the road's centre line at the square's middle, a turn on the spot (a
+ * 6 m road leaves no room for a 2 m car to swing round), and across to the other lane.</li>
+ * </ul>
+ * The car follows the path with a Stanley controller on its rear axle: the planned heading at
+ * the nearest path point, corrected towards the path by the axle's cross-track error.
  */
 final class CrossingPath {
-    static final double LOOKAHEAD = 1.5;
     /** The path runs on this far beyond the waypoint, along the exit lane, so the car leaves aligned. */
     static final double TAIL = 4.0;
-    /**
-     * Radii of the rear axle's arc. A left turn (the near side) curves round the kerb corner itself,
-     * so the body's inside keeps 0.5 m off it; a right turn is wide enough that the front's outer
-     * corner stays on the road; a U-turn half circle is centred on the road's centre line.
-     */
     static final double LEFT_TURN_RADIUS = 1.5;
-    static final double RIGHT_TURN_RADIUS = 2.5;
-    static final double U_TURN_RADIUS = 1.5;
+    static final double RIGHT_TURN_RADIUS = 4.5;
+    /**
+     * Where a U-turn turns on the spot, past the square's middle: turning sweeps 1.8 m round the
+     * rear axle, and the square's far side may be a closed road end 3 m beyond its middle.
+     */
+    static final double U_TURN_BEYOND_CENTRE = 1.1;
+    /** ...and half-way across the centre line towards the lane it turns into, which halves the last shift. */
+    static final double U_TURN_ACROSS_CENTRE = 0.75;
+    /** How hard the car steers back onto the path (per metre of cross-track error, per metre per tick of speed). */
+    static final double CROSS_TRACK_GAIN = 1.5;
+    /** Keeps the correction gentle at crawling speed, where the car would otherwise swerve. */
+    static final double SOFTENING = 1.0;
+    /** A turn on the spot is done when the heading is this close to the planned one. */
+    static final double TURNED = 1.0;
     private static final int ARC_STEPS = 12;
     private static final double STEP = 0.5;
+    private static final double ROTATION_STEP = 15;
 
+    private final double axle;
     private final double[] xs;
     private final double[] ys;
+    private final double[] headings;
+    private final boolean[] onTheSpot;
     private int progress;
 
-    private CrossingPath(double[] xs, double[] ys) {
+    private CrossingPath(double axle, double[] xs, double[] ys, double[] headings, boolean[] onTheSpot) {
+        this.axle = axle;
         this.xs = xs;
         this.ys = ys;
+        this.headings = headings;
+        this.onTheSpot = onTheSpot;
     }
 
     /**
      * The path for a car whose front is at ({@code x0}, {@code y0}) arriving {@code arrival}, to
-     * the waypoint, leaving {@code exit}; the rear axle is {@code axle} metres behind the front.
+     * the waypoint ({@code wx}, {@code wy}) in the lane leaving {@code exit}, through the junction
+     * centred at ({@code jx}, {@code jy}); the rear axle is {@code axle} metres behind the front.
      */
-    static CrossingPath between(double x0, double y0, Compass arrival, double wx, double wy, Compass exit, double axle) {
-        Builder front = new Builder(axle);
-        double px = x0 - arrival.dx() * axle;
-        double py = y0 - arrival.dy() * axle;
-        front.start(px, py, arrival);
+    static CrossingPath between(double x0, double y0, Compass arrival, double wx, double wy, Compass exit,
+                                double jx, double jy, double axle) {
+        Builder path = new Builder(axle);
+        path.start(x0 - arrival.dx() * axle, y0 - arrival.dy() * axle, arrival.bearing());
+        double endX = wx - exit.dx() * axle;
+        double endY = wy - exit.dy() * axle;
         if (exit == arrival) {
-            front.straight(wx - exit.dx() * axle, wy - exit.dy() * axle, exit);
+            path.straightTo(endX, endY);
         } else if (exit == arrival.opposite()) {
-            Compass right = arrival.right();
-            front.arc(px + right.dx() * U_TURN_RADIUS, py + right.dy() * U_TURN_RADIUS, U_TURN_RADIUS, arrival, -Math.PI);
-            front.straight(wx - exit.dx() * axle, wy - exit.dy() * axle, exit);
+            // turn on the road's centre line, past the square's middle but clear of its far side
+            Compass across = arrival.right();
+            double tx = jx + arrival.dx() * U_TURN_BEYOND_CENTRE + across.dx() * U_TURN_ACROSS_CENTRE;
+            double ty = jy + arrival.dy() * U_TURN_BEYOND_CENTRE + across.dy() * U_TURN_ACROSS_CENTRE;
+            path.straightTo(tx, ty);
+            path.turnOnTheSpot(Bearing.between(tx, ty, endX, endY), false);
+            path.straightTo(endX, endY);
         } else {
             // the lane centres cross at (cx, cy); the axle rounds that corner on an arc
             double cx = arrival.isNorthSouth() ? x0 : wx;
             double cy = arrival.isNorthSouth() ? wy : y0;
             boolean left = exit == arrival.left();
             double r = left ? LEFT_TURN_RADIUS : RIGHT_TURN_RADIUS;
-            front.straight(cx - arrival.dx() * r, cy - arrival.dy() * r, arrival);
-            front.arc(cx - arrival.dx() * r + exit.dx() * r, cy - arrival.dy() * r + exit.dy() * r, r, arrival,
+            path.straightTo(cx - arrival.dx() * r, cy - arrival.dy() * r);
+            path.arc(cx - arrival.dx() * r + exit.dx() * r, cy - arrival.dy() * r + exit.dy() * r, r,
                     left ? Math.PI / 2 : -Math.PI / 2);
-            front.straight(wx - exit.dx() * axle, wy - exit.dy() * axle, exit);
+            path.straightTo(endX, endY);
         }
-        front.straight(wx + exit.dx() * (TAIL - axle), wy + exit.dy() * (TAIL - axle), exit);
-        return front.build();
+        path.straightTo(wx + exit.dx() * (TAIL - axle), wy + exit.dy() * (TAIL - axle));
+        return path.build();
     }
 
-    /** The path point to steer at from ({@code x}, {@code y}): the last one within the lookahead, moving on only. */
-    double[] aim(double x, double y) {
+    /**
+     * The bearing to steer to for a car whose front is at ({@code x}, {@code y}), heading
+     * {@code heading}, at {@code speed}: the plan is for its rear axle, which moves along its
+     * heading, so the axle is steered. The nearest path point only moves on.
+     */
+    double bearing(double x, double y, double heading, double speed) {
+        double px = x - axle * Math.sin(Math.toRadians(heading));
+        double py = y - axle * Math.cos(Math.toRadians(heading));
+        return axleBearing(px, py, speed);
+    }
+
+    private double axleBearing(double x, double y, double speed) {
+        if (isTurningOnTheSpot()) {
+            int last = progress;
+            while (last + 1 < onTheSpot.length && onTheSpot[last + 1]) {
+                last++;
+            }
+            double next = headings[Math.min(progress + 1, last)];
+            return next;
+        }
         int nearest = progress;
         double best = Double.MAX_VALUE;
-        for (int i = progress; i < Math.min(xs.length, progress + 12); i++) {
+        for (int i = progress; i < Math.min(xs.length, progress + 16); i++) {
+            if (i > progress && onTheSpot[i]) {
+                break; // never skip a turn on the spot
+            }
             double d = Math.hypot(xs[i] - x, ys[i] - y);
             if (d < best) {
                 best = d;
@@ -77,81 +125,125 @@ final class CrossingPath {
             }
         }
         progress = nearest;
-        int target = nearest;
-        while (target + 1 < xs.length && Math.hypot(xs[target + 1] - x, ys[target + 1] - y) <= LOOKAHEAD) {
-            target++;
-        }
-        if (target == nearest && target + 1 < xs.length) {
-            target++;
-        }
-        return new double[] {xs[target], ys[target]};
+        double h = headings[nearest];
+        double hx = Math.sin(Math.toRadians(h));
+        double hy = Math.cos(Math.toRadians(h));
+        // how far the car is to the left of the path (left of a driver facing h is (cos h, -sin h))
+        double left = (x - xs[nearest]) * hy - (y - ys[nearest]) * hx;
+        return h - Math.toDegrees(Math.atan2(CROSS_TRACK_GAIN * left, speed + SOFTENING));
     }
 
-    /**
-     * Follows the rear axle along straights and arcs and records where the front is: the axle's
-     * position moved forward along its heading.
-     */
+    /** Whether the car has come to the path's last point. */
+    boolean isFinished() {
+        return progress == xs.length - 1;
+    }
+
+    /** Whether the car is at a turn on the spot (it must stand still while it turns). */
+    boolean isTurningOnTheSpot() {
+        return progress + 1 < onTheSpot.length && onTheSpot[progress + 1];
+    }
+
+    /** While turning on the spot: moves on once the car faces the next planned heading. */
+    void turned(double heading) {
+        while (isTurningOnTheSpot() && Math.abs(Bearing.turn(heading, headings[progress + 1])) < TURNED) {
+            progress++;
+        }
+    }
+
+    /** Distance from the car's rear axle to the next turn on the spot ahead, or infinity. */
+    double distanceToTurnOnTheSpot(double x, double y, double heading) {
+        double px = x - axle * Math.sin(Math.toRadians(heading));
+        double py = y - axle * Math.cos(Math.toRadians(heading));
+        for (int i = progress; i + 1 < onTheSpot.length; i++) {
+            if (onTheSpot[i + 1]) {
+                return Math.hypot(xs[i] - px, ys[i] - py);
+            }
+        }
+        return Double.POSITIVE_INFINITY;
+    }
+
+    /** Follows the rear axle along straights, arcs and turns on the spot and records where the front is. */
     private static final class Builder {
         private final double axle;
         private double[] xs = new double[128];
         private double[] ys = new double[128];
+        private double[] hs = new double[128];
+        private boolean[] spot = new boolean[128];
         private int n;
         private double ax;
         private double ay;
+        private double heading;
 
         Builder(double axle) {
             this.axle = axle;
         }
 
-        void start(double x, double y, Compass heading) {
+        void start(double x, double y, double bearing) {
             ax = x;
             ay = y;
-            record(heading.dx(), heading.dy());
+            heading = bearing;
+            record(false);
         }
 
-        void straight(double x, double y, Compass heading) {
+        void straightTo(double x, double y) {
             double fx = ax;
             double fy = ay;
-            int steps = Math.max(1, (int) Math.ceil(Math.hypot(x - fx, y - fy) / STEP));
+            double length = Math.hypot(x - fx, y - fy);
+            if (length < 1e-9) {
+                return;
+            }
+            heading = Bearing.between(fx, fy, x, y);
+            int steps = Math.max(1, (int) Math.ceil(length / STEP));
             for (int i = 1; i <= steps; i++) {
                 ax = fx + (x - fx) * i / steps;
                 ay = fy + (y - fy) * i / steps;
-                record(heading.dx(), heading.dy());
+                record(false);
             }
         }
 
-        /**
-         * An arc about ({@code ox}, {@code oy}) of radius {@code r}, starting heading {@code from},
-         * turning {@code sweep} radians (positive: to the left, as bearings count).
-         */
-        void arc(double ox, double oy, double r, Compass from, double sweep) {
-            double heading0 = Math.toRadians(from.bearing());
-            for (int i = 1; i <= ARC_STEPS * Math.abs(sweep) / (Math.PI / 2); i++) {
-                double h = heading0 + sweep * i / (ARC_STEPS * Math.abs(sweep) / (Math.PI / 2));
-                double hx = Math.sin(h);
-                double hy = Math.cos(h);
+        /** An arc about ({@code ox}, {@code oy}) of radius {@code r}, turning {@code sweep} radians (positive: left). */
+        void arc(double ox, double oy, double r, double sweep) {
+            double h0 = Math.toRadians(heading);
+            int steps = (int) Math.round(ARC_STEPS * Math.abs(sweep) / (Math.PI / 2));
+            double side = Math.signum(sweep);
+            for (int i = 1; i <= steps; i++) {
+                double h = h0 + sweep * i / steps;
                 // the centre lies to the side the car turns towards
-                double side = Math.signum(sweep);
-                double lx = Math.sin(h + side * Math.PI / 2);
-                double ly = Math.cos(h + side * Math.PI / 2);
-                ax = ox - lx * r;
-                ay = oy - ly * r;
-                record(hx, hy);
+                ax = ox - Math.sin(h + side * Math.PI / 2) * r;
+                ay = oy - Math.cos(h + side * Math.PI / 2) * r;
+                heading = Bearing.normalise(Math.toDegrees(h));
+                record(false);
             }
         }
 
-        private void record(double hx, double hy) {
+        /** Turns on the spot to {@code bearing}, to the left or (U-turns in left-hand traffic) the right. */
+        void turnOnTheSpot(double bearing, boolean toTheLeft) {
+            double turn = Bearing.normalise(toTheLeft ? bearing - heading : heading - bearing);
+            int steps = (int) Math.ceil(turn / ROTATION_STEP);
+            double from = heading;
+            for (int i = 1; i <= steps; i++) {
+                heading = Bearing.normalise(from + (toTheLeft ? 1 : -1) * turn * i / steps);
+                record(true);
+            }
+        }
+
+        private void record(boolean onTheSpot) {
             if (n == xs.length) {
                 xs = Arrays.copyOf(xs, 2 * n);
                 ys = Arrays.copyOf(ys, 2 * n);
+                hs = Arrays.copyOf(hs, 2 * n);
+                spot = Arrays.copyOf(spot, 2 * n);
             }
-            xs[n] = ax + hx * axle;
-            ys[n] = ay + hy * axle;
+            xs[n] = ax;
+            ys[n] = ay;
+            hs[n] = heading;
+            spot[n] = onTheSpot;
             n++;
         }
 
         CrossingPath build() {
-            return new CrossingPath(Arrays.copyOf(xs, n), Arrays.copyOf(ys, n));
+            return new CrossingPath(axle, Arrays.copyOf(xs, n), Arrays.copyOf(ys, n), Arrays.copyOf(hs, n),
+                    Arrays.copyOf(spot, n));
         }
     }
 }

@@ -13,6 +13,8 @@ public final class Dynamics {
     /** Ticks in a run before it times out. */
     public static final long TIMEOUT_TICKS = 5000;
 
+    private static final double FULL_SPEED_STOPPING_DISTANCE = stoppingDistance(MAX_SPEED);
+
     private Dynamics() {
     }
 
@@ -32,6 +34,9 @@ public final class Dynamics {
     public static double speedToStopWithin(double distance) {
         if (distance <= 0) {
             return 0;
+        }
+        if (distance >= FULL_SPEED_STOPPING_DISTANCE) {
+            return MAX_SPEED;
         }
         // invert stoppingDistance approximately from below: v + v^2 / (2b) <= d
         double b = BRAKING;

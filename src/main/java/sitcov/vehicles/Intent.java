@@ -6,24 +6,35 @@ package sitcov.vehicles;
  */
 final class Intent {
     private double speedLimit;
+    private String limitedBy;
     private boolean crawl;
     private double bearing;
     private String steeredBy;
 
     void reset() {
         speedLimit = Dynamics.MAX_SPEED;
+        limitedBy = null;
         crawl = false;
         bearing = Double.NaN;
         steeredBy = null;
     }
 
-    void limit(double speed) {
-        speedLimit = Math.min(speedLimit, Math.max(0, speed));
+    void limit(double speed, String by) {
+        double s = Math.max(0, speed);
+        if (s < speedLimit) {
+            speedLimit = s;
+            limitedBy = by;
+        }
     }
 
     /** Be able to stop within {@code distance} metres. */
-    void stopWithin(double distance) {
-        limit(Dynamics.speedToStopWithin(distance));
+    void stopWithin(double distance, String by) {
+        limit(Dynamics.speedToStopWithin(distance), by);
+    }
+
+    /** Which behaviour set the speed limit in force (null when none did). */
+    String limitedBy() {
+        return limitedBy;
     }
 
     void crawl() {

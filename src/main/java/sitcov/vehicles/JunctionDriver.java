@@ -23,7 +23,8 @@ final class JunctionDriver {
     /** Ticks after which another vehicle's hold on a junction is taken to be stale. */
     static final long PATIENCE = 80;
     static final double EXIT_BEYOND_SQUARE = 1.5;
-    static final double EXIT_REACHED = 1.5;
+    /** A crossing that has taken the car this far from the junction's centre has gone wrong: give it up. */
+    static final double STRAYED = 12;
 
     private final AutonomousCar car;
     private final FaultSwitchboard faults;
@@ -34,6 +35,7 @@ final class JunctionDriver {
     private Compass exit;
     private int waypoint;
     private CrossingPath path;
+    private sitcov.geom.Vec2 junctionCentre;
     private boolean crossing;
     private boolean waiting;
 
@@ -81,13 +83,13 @@ final class JunctionDriver {
         if (d > sitcov.world.Dimensions.APPROACH_LENGTH) {
             return;
         }
-        intent.limit(APPROACH_SPEED + Math.sqrt(2 * Dynamics.BRAKING * Math.max(0, d - 5)));
+        intent.limit(APPROACH_SPEED + Math.sqrt(2 * Dynamics.BRAKING * Math.max(0, d - 5)), "junction");
         if (held == next.id()) {
             if (d <= 0) {
                 startCrossing(next, lane);
                 cross(intent);
             } else {
-                intent.limit(entrySpeed(lane) + Dynamics.speedToStopWithin(d));
+                intent.limit(entrySpeed(lane) + 0.5 * Dynamics.speedToStopWithin(d), "junction");
             }
             return;
         }
@@ -101,7 +103,7 @@ final class JunctionDriver {
             held = next.id();
             arrival = lane;
             exit = chooseExit(next);
-            intent.limit(entrySpeed(lane) + Dynamics.speedToStopWithin(d));
+            intent.limit(entrySpeed(lane) + 0.5 * Dynamics.speedToStopWithin(d), "junction");
             return;
         }
         waiting = true;
@@ -113,7 +115,7 @@ final class JunctionDriver {
                 faults.reached(Fault.CREEPS_WHILE_WAITING);
             }
         } else {
-            intent.stopWithin(d - 0.5);
+            intent.stopWithin(d - 0.5, "junction");
         }
     }
 
@@ -136,7 +138,9 @@ final class JunctionDriver {
         var point = junction.exitPoint(exit, EXIT_BEYOND_SQUARE);
         waypoint = car.waypoints().create(point.x(), point.y(), Waypoint.Kind.JUNCTION_EXIT);
         Waypoint wp = car.waypoints().lookup(waypoint);
-        path = CrossingPath.between(car.x(), car.y(), arrival, wp.x(), wp.y(), exit, AutonomousCar.REAR_AXLE);
+        junctionCentre = junction.centre();
+        path = CrossingPath.between(car.x(), car.y(), arrival, wp.x(), wp.y(), exit, junction.centre().x(),
+                junction.centre().y(), AutonomousCar.REAR_AXLE);
         crossing = true;
         exitsTaken[junction.id()][exit.ordinal()]++;
     }
@@ -149,16 +153,22 @@ final class JunctionDriver {
         }
         // the crossing ends half-way along the path's tail beyond the waypoint, the car aligned with its lane
         double beyond = (car.x() - wp.x()) * exit.dx() + (car.y() - wp.y()) * exit.dy();
-        if (beyond > CrossingPath.TAIL / 2) {
+        boolean strayed = junctionCentre.distanceTo(car.x(), car.y()) > STRAYED;
+        if (beyond > CrossingPath.TAIL / 2 || path.isFinished() || strayed) {
             crossing = false;
             car.waypoints().remove(waypoint);
             car.setLane(exit);
             return;
         }
-        double[] aim = path.aim(car.x(), car.y());
-        intent.steer(Bearing.between(car.x(), car.y(), aim[0], aim[1]), "junction");
+        path.turned(car.heading());
+        intent.steer(path.bearing(car.x(), car.y(), car.heading(), car.speed()), "junction");
         double speed = entrySpeed(arrival);
-        intent.limit(speed);
+        intent.limit(speed, "junction");
+        if (path.isTurningOnTheSpot()) {
+            intent.limit(0, "junction");
+        } else {
+            intent.stopWithin(path.distanceToTurnOnTheSpot(car.x(), car.y(), car.heading()), "junction");
+        }
         if (speed <= Dynamics.CRAWL_CEILING) {
             intent.crawl();
         }

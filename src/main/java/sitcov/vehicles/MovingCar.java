@@ -33,6 +33,11 @@ public final class MovingCar implements Vehicle, Steppable {
     static final double GAP = 2;
     /** Ticks standing still after which the driver stops waiting for other standing moving cars. */
     static final int IMPATIENCE = 40;
+    /**
+     * Ticks standing still (20 s) after which the driver gives up and leaves the map, to be
+     * replaced at a dead end: traffic never locks up for good, around the autonomous car or not.
+     */
+    static final int GIVE_UP = 100;
     /** Its rear axle, which it turns about, is this far behind its front. */
     static final double REAR_AXLE = 3.5;
 
@@ -46,6 +51,7 @@ public final class MovingCar implements Vehicle, Steppable {
     private int held = -1;
     private Compass exit;
     private boolean crossing;
+    private CrossingPath path;
     private boolean leaving;
     private double waypointX;
     private double waypointY;
@@ -68,20 +74,25 @@ public final class MovingCar implements Vehicle, Steppable {
             reenter();
             return;
         }
-        if (hasLeftTheRoads()) {
+        if (hasLeftTheRoads() || stoppedFor > GIVE_UP) {
             scene.occupancy().releaseAll(id);
             held = -1;
             crossing = false;
             active = false;
+            stoppedFor = 0;
             return;
         }
         double limit = Dynamics.MAX_SPEED;
         double bearing = body.heading();
         if (crossing) {
-            limit = Math.min(limit, exit == lane.opposite() ? U_TURN_SPEED : JUNCTION_SPEED);
-            bearing = Bearing.between(body.x(), body.y(), waypointX, waypointY);
-            boolean passed = (body.x() - waypointX) * exit.dx() + (body.y() - waypointY) * exit.dy() > 0;
-            if (Math.hypot(body.x() - waypointX, body.y() - waypointY) < 1 || passed) {
+            path.turned(body.heading());
+            limit = Math.min(limit, exit == lane.left() || exit == lane.opposite() ? U_TURN_SPEED : JUNCTION_SPEED);
+            limit = path.isTurningOnTheSpot() ? 0
+                    : Math.min(limit, Dynamics.speedToStopWithin(path.distanceToTurnOnTheSpot(body.x(), body.y(), body.heading())));
+            bearing = path.bearing(body.x(), body.y(), body.heading(), body.speed());
+            double beyond = (body.x() - waypointX) * exit.dx() + (body.y() - waypointY) * exit.dy();
+            if (beyond > CrossingPath.TAIL / 2 || path.isFinished()
+                    || Math.hypot(body.x() - waypointX, body.y() - waypointY) > JunctionDriver.STRAYED) {
                 crossing = false;
                 lane = exit;
             }
@@ -139,9 +150,11 @@ public final class MovingCar implements Vehicle, Steppable {
         leaving = !junction.hasArm(exit);
         Vec2 point = leaving
                 ? junction.exitPoint(exit, 12)
-                : junction.exitPoint(exit, 1);
+                : junction.exitPoint(exit, JunctionDriver.EXIT_BEYOND_SQUARE);
         waypointX = point.x();
         waypointY = point.y();
+        path = CrossingPath.between(body.x(), body.y(), lane, waypointX, waypointY, exit,
+                junction.centre().x(), junction.centre().y(), REAR_AXLE);
         crossing = true;
     }
 

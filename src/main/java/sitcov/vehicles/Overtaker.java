@@ -48,7 +48,7 @@ final class Overtaker {
             stage = OvertakingStage.NOT_OVERTAKING;
             return;
         }
-        intent.stopWithin(s.nearest - WAIT_GAP);
+        intent.stopWithin(s.nearest - WAIT_GAP, "overtaking");
         if (s.nearest > HEADWAY + car.speed()) {
             return;
         }
@@ -81,7 +81,7 @@ final class Overtaker {
             end();
             return;
         }
-        intent.limit(Double.isNaN(oppositeStart) ? PASSING_SPEED : TIGHT_SPEED);
+        intent.limit(Double.isNaN(oppositeStart) ? PASSING_SPEED : TIGHT_SPEED, "overtaking");
         double ahead = LaneFrame.u(lane, car.x(), car.y(), wp.x(), wp.y());
         if (ahead <= Math.max(1, car.speed() / 2)) {
             advance(laneCentre, wp);

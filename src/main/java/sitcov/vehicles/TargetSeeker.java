@@ -37,7 +37,7 @@ final class TargetSeeker {
         if (!inLane(v, laneCentre)) {
             if (u <= DIRECT_DISTANCE && faults.isActive(Fault.TARGET_LANE_CHECK_SKIPPED)) {
                 faults.effective(Fault.TARGET_LANE_CHECK_SKIPPED);
-                intent.stopWithin(Math.max(0, u));
+                intent.stopWithin(Math.max(0, u), "target");
                 intent.steer(Bearing.between(car.x(), car.y(), target.position().x(), target.position().y()), "target");
             }
             return;
@@ -45,7 +45,7 @@ final class TargetSeeker {
         if (u <= DIRECT_DISTANCE && faults.isActive(Fault.TARGET_LANE_CHECK_SKIPPED)) {
             faults.reached(Fault.TARGET_LANE_CHECK_SKIPPED);
         }
-        intent.stopWithin(Math.max(0, u));
+        intent.stopWithin(Math.max(0, u), "target");
         double aim = Math.max(laneCentre - LATERAL_FREEDOM, Math.min(laneCentre + LATERAL_FREEDOM, v));
         intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(aim, Math.max(2, u))), "target");
     }

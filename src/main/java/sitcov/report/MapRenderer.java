@@ -63,9 +63,30 @@ public final class MapRenderer {
         return scale;
     }
 
+    /**
+     * What a picture drawn over the map adds (a run, say): things drawn in the world under the
+     * map's labels, and labelled marks drawn after them, whose labels keep clear of the map's.
+     */
+    interface Overlay {
+        Overlay NONE = new Overlay() { };
+
+        /** Draws on {@code metres}, whose user space is the world in metres, over the world and under every label. */
+        default void drawInWorld(Graphics2D metres) {
+        }
+
+        /** Draws on {@code pixels} once the map's labels are placed; {@code labels} keeps new labels off them. */
+        default void drawLabelled(Graphics2D pixels, LabelPlacer labels) {
+        }
+    }
+
     public BufferedImage render(WorldMap map) {
+        return render(map, Overlay.NONE);
+    }
+
+    /** The map with {@code overlay} drawn over it (the caption is still the map's). */
+    BufferedImage render(WorldMap map, Overlay overlay) {
         Dimension size = imageSize(scale);
-        int worldHeight = (int) Math.round(Dimensions.WORLD_HEIGHT * scale);
+        int worldHeight = worldHeightPixels(scale);
         BufferedImage image = new BufferedImage(size.width, size.height, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         try {
@@ -77,8 +98,10 @@ public final class MapRenderer {
             AffineTransform pixels = g.getTransform();
             g.scale(scale, scale);
             drawWorld(g, map);
+            overlay.drawInWorld(g);
             g.setTransform(pixels);
-            drawLabels(g, map, new Rectangle2D.Double(0, 0, size.width, worldHeight));
+            LabelPlacer labels = drawLabels(g, map, new Rectangle2D.Double(0, 0, size.width, worldHeight));
+            overlay.drawLabelled(g, labels);
             g.setClip(null);
             g.setColor(MapStyle.FRAME);
             g.fillRect(0, worldHeight, size.width, Math.max(1, scale / 3));
@@ -91,9 +114,13 @@ public final class MapRenderer {
 
     /** Writes the picture atomically: to a temporary file in the same folder, then moved into place. */
     public void writePng(WorldMap map, Path file) throws IOException {
+        writeAtomically(render(map), file);
+    }
+
+    /** Writes {@code image} as a PNG to a temporary file beside {@code file}, then moves it into place. */
+    static void writeAtomically(BufferedImage image, Path file) throws IOException {
         Path target = file.toAbsolutePath();
         Path folder = target.getParent();
-        BufferedImage image = render(map);
         Path temp = Files.createTempFile(folder, "." + target.getFileName(), ".tmp");
         try {
             if (!ImageIO.write(image, "png", temp.toFile())) {
@@ -109,7 +136,16 @@ public final class MapRenderer {
         }
     }
 
-    private void drawWorld(Graphics2D g, WorldMap map) {
+    /** Height of the world area in pixels at a scale: where the caption strip starts. */
+    static int worldHeightPixels(int pixelsPerMetre) {
+        return (int) Math.round(Dimensions.WORLD_HEIGHT * pixelsPerMetre);
+    }
+
+    /**
+     * Draws the world (no labels, no caption) on {@code g}, whose user space must already be in
+     * metres at this renderer's scale; lets other pictures draw a map and their own things on it.
+     */
+    void drawWorld(Graphics2D g, WorldMap map) {
         Layout layout = map.layout();
         RoadNetwork network = RoadNetwork.of(layout);
         MapShapes shapes = new MapShapes(g, style);
@@ -173,7 +209,7 @@ public final class MapRenderer {
         g.draw(line);
     }
 
-    private void drawLabels(Graphics2D g, WorldMap map, Rectangle2D bounds) {
+    private LabelPlacer drawLabels(Graphics2D g, WorldMap map, Rectangle2D bounds) {
         Layout layout = map.layout();
         LabelPlacer labels = new LabelPlacer(g, style, bounds);
         double r = MapStyle.TARGET_RADIUS * scale;
@@ -193,6 +229,7 @@ public final class MapRenderer {
             labels.place("AR", body.centre().x() * scale, body.centre().y() * scale, 1.2 * scale,
                     1.5 * scale, MapStyle.AUTONOMOUS_CAR);
         });
+        return labels;
     }
 
     /** The area the autonomous car's symbol covers: its body and the arrow ahead of it. */

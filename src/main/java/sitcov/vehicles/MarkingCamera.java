@@ -17,10 +17,19 @@ import sitcov.world.RoadNetwork;
  */
 final class MarkingCamera {
     private static final int MAX_CANDIDATES = 64;
+    private static final int MAX_RAYS = 1024;
+    /**
+     * A line is taken to be the car's own when its hits lie within this much of the nearest one
+     * seen, and no farther than {@link #FARTHEST_LINE} to the side: a ray that runs on along a
+     * side road can see another road's lines, which must not be mistaken for the lane's.
+     */
+    static final double SAME_LINE = 0.3;
+    static final double FARTHEST_LINE = 4.5;
 
     private final RoadNetwork network;
     private final Rect[] strips = new Rect[MAX_CANDIDATES];
     private final double[] interval = new double[2];
+    private final double[] seen = new double[MAX_RAYS];
     private final RoadReach roadReach;
 
     MarkingCamera(RoadNetwork network) {
@@ -33,31 +42,49 @@ final class MarkingCamera {
         double limit = settings.limit();
         roadReach.gather(x, y, limit);
         Compass right = lane.right();
-        double edgeSum = 0;
-        int edgeHits = 0;
         int n = nearbyStrips(x, y, lane, limit, MarkingKind.EDGE);
-        for (double i = settings.leftArc(); i >= -1e-9; i -= settings.angularStep()) {
+        int hits = 0;
+        for (double i = settings.leftArc(); i >= -1e-9 && hits < MAX_RAYS; i -= settings.angularStep()) {
             double v = lateralOfHit(x, y, lane.bearing() + i, right, n, settings, limit);
-            if (!Double.isNaN(v) && v < 0) {
-                edgeSum += v;
-                edgeHits++;
+            if (!Double.isNaN(v) && v < 0 && v > -FARTHEST_LINE) {
+                seen[hits++] = v;
             }
         }
-        double centreSum = 0;
-        int centreHits = 0;
+        double edge = nearestLine(hits, -1);
         n = nearbyStrips(x, y, lane, limit, MarkingKind.CENTRE);
-        for (double i = 0; i >= -settings.rightArc() - 1e-9; i -= settings.angularStep()) {
+        hits = 0;
+        for (double i = 0; i >= -settings.rightArc() - 1e-9 && hits < MAX_RAYS; i -= settings.angularStep()) {
             double v = lateralOfHit(x, y, lane.bearing() + i, right, n, settings, limit);
-            if (!Double.isNaN(v) && v > 0) {
-                centreSum += v;
-                centreHits++;
+            if (!Double.isNaN(v) && v > 0 && v < FARTHEST_LINE) {
+                seen[hits++] = v;
             }
         }
-        if (edgeHits == 0 && centreHits == 0) {
+        double centre = nearestLine(hits, 1);
+        if (Double.isNaN(edge) && Double.isNaN(centre)) {
             return LaneEstimate.NOTHING_SEEN;
         }
-        return new LaneEstimate(edgeHits > 0, edgeHits > 0 ? edgeSum / edgeHits : 0,
-                centreHits > 0, centreHits > 0 ? centreSum / centreHits : 0);
+        return new LaneEstimate(!Double.isNaN(edge), Double.isNaN(edge) ? 0 : edge,
+                !Double.isNaN(centre), Double.isNaN(centre) ? 0 : centre);
+    }
+
+    /** The mean lateral offset of the hits on the line nearest the car on one side ({@code side} −1 left, +1 right); NaN if none. */
+    private double nearestLine(int hits, int side) {
+        if (hits == 0) {
+            return Double.NaN;
+        }
+        double nearest = Double.MAX_VALUE;
+        for (int k = 0; k < hits; k++) {
+            nearest = Math.min(nearest, Math.abs(seen[k]));
+        }
+        double sum = 0;
+        int count = 0;
+        for (int k = 0; k < hits; k++) {
+            if (Math.abs(seen[k]) <= nearest + SAME_LINE) {
+                sum += seen[k];
+                count++;
+            }
+        }
+        return sum / count;
     }
 
     /** The lateral offset (right positive) of the ray's first marking hit, or NaN. */

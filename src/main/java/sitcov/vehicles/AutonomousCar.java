@@ -200,6 +200,11 @@ public final class AutonomousCar implements Vehicle, Steppable {
         return intent.limitedBy();
     }
 
+    /** The bearing it steered towards in the last tick. */
+    public double steeringBearing() {
+        return intent.bearing();
+    }
+
     /** Which behaviour steered in the last tick. */
     public String steeredBy() {
         return intent.steeredBy();

@@ -28,7 +28,7 @@ final class CrossingPath {
      * Where a U-turn turns on the spot, past the square's middle: turning sweeps 1.8 m round the
      * rear axle, and the square's far side may be a closed road end 3 m beyond its middle.
      */
-    static final double U_TURN_BEYOND_CENTRE = 1.1;
+    static final double U_TURN_BEYOND_CENTRE = 0.5;
     /** ...and half-way across the centre line towards the lane it turns into, which halves the last shift. */
     static final double U_TURN_ACROSS_CENTRE = 0.75;
     /** How hard the car steers back onto the path (per metre of cross-track error, per metre per tick of speed). */
@@ -39,6 +39,7 @@ final class CrossingPath {
     static final double TURNED = 1.0;
     private static final int ARC_STEPS = 12;
     private static final double STEP = 0.5;
+    private static final double MIN_STRAIGHT = 0.05;
     private static final double ROTATION_STEP = 15;
 
     private final double axle;
@@ -189,7 +190,10 @@ final class CrossingPath {
             double fx = ax;
             double fy = ay;
             double length = Math.hypot(x - fx, y - fy);
-            if (length < 1e-9) {
+            if (length < MIN_STRAIGHT) {
+                // a sliver (the car a few millimetres off its lane centre) has no direction worth steering by
+                ax = x;
+                ay = y;
                 return;
             }
             heading = Bearing.between(fx, fy, x, y);

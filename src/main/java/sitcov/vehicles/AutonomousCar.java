@@ -117,7 +117,7 @@ public final class AutonomousCar implements Vehicle, Steppable {
 
     private void drive() {
         double limit = intent.speedLimit();
-        if (intent.isCrawl() && limit >= Dynamics.CRAWL_FLOOR) {
+        if (intent.isCrawl() && limit >= Dynamics.CRAWL_CEILING) {
             crawl();
         } else {
             body.approachSpeed(limit);

@@ -3,6 +3,10 @@ package sitcov.vehicles;
 import java.util.Arrays;
 import sitcov.geom.Bearing;
 import sitcov.geom.Compass;
+import sitcov.world.Dimensions;
+import sitcov.world.Junction;
+import sitcov.world.Road;
+import sitcov.world.RoadNetwork;
 
 /**
  * The path of the car's front through a junction square, from where it entered to its exit
@@ -91,6 +95,27 @@ final class CrossingPath {
         }
         path.straightTo(wx + exit.dx() * (TAIL - axle), wy + exit.dy() * (TAIL - axle));
         return path.build();
+    }
+
+    /**
+     * How far beyond the exit waypoint a crossing ends: half-way along the tail, where the car is
+     * aligned with its lane — or at the waypoint itself when the next junction's square begins
+     * before that, so the car can ask for that junction in time.
+     */
+    static double finishBeyond(RoadNetwork network, Junction from, Compass exit, double wx, double wy) {
+        Road road = Lanes.roadAlong(network, wx, wy, exit);
+        if (road == null) {
+            return TAIL / 2;
+        }
+        for (Junction j : network.junctions()) {
+            if (j != from && road.carries(j.centre())) {
+                double d = Lanes.distanceToSquare(j, exit, wx, wy);
+                if (d > -Dimensions.JUNCTION_SIZE && d < TAIL / 2 + 1) {
+                    return 0;
+                }
+            }
+        }
+        return TAIL / 2;
     }
 
     /**
@@ -190,13 +215,15 @@ final class CrossingPath {
             double fx = ax;
             double fy = ay;
             double length = Math.hypot(x - fx, y - fy);
-            if (length < MIN_STRAIGHT) {
-                // a sliver (the car a few millimetres off its lane centre) has no direction worth steering by
+            double direction = Bearing.between(fx, fy, x, y);
+            if (length < MIN_STRAIGHT || Math.abs(Bearing.turn(heading, direction)) > 90) {
+                // a sliver (the car a few millimetres off its lane centre) has no direction worth
+                // steering by, and a car that entered late must not be sent back the way it came
                 ax = x;
                 ay = y;
                 return;
             }
-            heading = Bearing.between(fx, fy, x, y);
+            heading = direction;
             int steps = Math.max(1, (int) Math.ceil(length / STEP));
             for (int i = 1; i <= steps; i++) {
                 ax = fx + (x - fx) * i / steps;

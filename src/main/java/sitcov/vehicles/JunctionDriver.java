@@ -36,6 +36,7 @@ final class JunctionDriver {
     private int waypoint;
     private CrossingPath path;
     private sitcov.geom.Vec2 junctionCentre;
+    private double finishBeyond;
     private boolean crossing;
     private boolean waiting;
 
@@ -139,6 +140,7 @@ final class JunctionDriver {
         waypoint = car.waypoints().create(point.x(), point.y(), Waypoint.Kind.JUNCTION_EXIT);
         Waypoint wp = car.waypoints().lookup(waypoint);
         junctionCentre = junction.centre();
+        finishBeyond = CrossingPath.finishBeyond(car.scene().network(), junction, exit, wp.x(), wp.y());
         path = CrossingPath.between(car.x(), car.y(), arrival, wp.x(), wp.y(), exit, junction.centre().x(),
                 junction.centre().y(), AutonomousCar.REAR_AXLE);
         crossing = true;
@@ -154,7 +156,7 @@ final class JunctionDriver {
         // the crossing ends half-way along the path's tail beyond the waypoint, the car aligned with its lane
         double beyond = (car.x() - wp.x()) * exit.dx() + (car.y() - wp.y()) * exit.dy();
         boolean strayed = junctionCentre.distanceTo(car.x(), car.y()) > STRAYED;
-        if (beyond > CrossingPath.TAIL / 2 || path.isFinished() || strayed) {
+        if (beyond > finishBeyond || path.isFinished() || strayed) {
             crossing = false;
             car.waypoints().remove(waypoint);
             car.setLane(exit);

@@ -52,6 +52,7 @@ public final class MovingCar implements Vehicle, Steppable {
     private Compass exit;
     private boolean crossing;
     private CrossingPath path;
+    private double finishBeyond;
     private boolean leaving;
     private double waypointX;
     private double waypointY;
@@ -91,7 +92,7 @@ public final class MovingCar implements Vehicle, Steppable {
                     : Math.min(limit, Dynamics.speedToStopWithin(path.distanceToTurnOnTheSpot(body.x(), body.y(), body.heading())));
             bearing = path.bearing(body.x(), body.y(), body.heading(), body.speed());
             double beyond = (body.x() - waypointX) * exit.dx() + (body.y() - waypointY) * exit.dy();
-            if (beyond > CrossingPath.TAIL / 2 || path.isFinished()
+            if (beyond > finishBeyond || path.isFinished()
                     || Math.hypot(body.x() - waypointX, body.y() - waypointY) > JunctionDriver.STRAYED) {
                 crossing = false;
                 lane = exit;
@@ -153,6 +154,7 @@ public final class MovingCar implements Vehicle, Steppable {
                 : junction.exitPoint(exit, JunctionDriver.EXIT_BEYOND_SQUARE);
         waypointX = point.x();
         waypointY = point.y();
+        finishBeyond = CrossingPath.finishBeyond(scene.network(), junction, exit, waypointX, waypointY);
         path = CrossingPath.between(body.x(), body.y(), lane, waypointX, waypointY, exit,
                 junction.centre().x(), junction.centre().y(), REAR_AXLE);
         crossing = true;

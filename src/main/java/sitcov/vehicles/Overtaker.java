@@ -15,7 +15,9 @@ final class Overtaker {
     static final double HEADWAY = 7;
     static final double BUFFER = 2;
     static final double PULL_OUT = 2.5;
-    static final double WAIT_GAP = 4.5;
+    static final double WAIT_GAP = 6;
+    /** Half the width the car sweeps, with a margin: a parked car inside it is in the car's way. */
+    static final double CORRIDOR = 1.3;
     static final double PASSING_SPEED = 1.5;
     static final double TIGHT_SPEED = 0.6;
     static final double PARKED_CAR_LENGTH = 5;
@@ -82,8 +84,24 @@ final class Overtaker {
             return;
         }
         intent.limit(Double.isNaN(oppositeStart) ? PASSING_SPEED : TIGHT_SPEED, "overtaking");
+        double blocked = parkedCarInTheWay();
+        if (!Double.isNaN(blocked)) {
+            intent.stopWithin(blocked - 0.7, "overtaking");
+        }
         double ahead = LaneFrame.u(lane, car.x(), car.y(), wp.x(), wp.y());
-        if (ahead <= Math.max(1, car.speed() / 2)) {
+        double aside = LaneFrame.v(lane, car.x(), car.y(), wp.x(), wp.y());
+        if (stage == OvertakingStage.FINISH && ahead <= Math.max(1, car.speed() / 2)) {
+            // back in only once the whole car is in its lane and straight, or the pass would end over the line
+            if (Math.abs(laneCentre) < 0.3 && Math.abs(Bearing.turn(car.heading(), lane.bearing())) < 6) {
+                end();
+                return;
+            }
+            intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(laneCentre, AutonomousCar.LOOKAHEAD)), "overtaking");
+            return;
+        }
+        // pulling out is only done once the car is across, not merely level with the waypoint
+        boolean outFarEnough = stage != OvertakingStage.START || Math.abs(aside) < 0.4;
+        if ((ahead <= Math.max(1, car.speed() / 2) && outFarEnough) || ahead < -1) {
             advance(laneCentre, wp);
             wp = car.waypoints().lookup(waypoint);
             if (wp == null || stage == OvertakingStage.NOT_OVERTAKING) {
@@ -185,6 +203,19 @@ final class Overtaker {
             ticks++;
         }
         return ticks;
+    }
+
+    /** Distance to the nearest parked car inside the width the car sweeps ahead of it, or NaN. */
+    private double parkedCarInTheWay() {
+        Lidar lidar = car.lidar();
+        int hits = lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.scene(), car);
+        double nearest = Double.NaN;
+        for (int h = 0; h < hits; h++) {
+            if (lidar.isParkedCar(h) && lidar.u(h) > 0 && Math.abs(lidar.v(h)) < CORRIDOR) {
+                nearest = Double.isNaN(nearest) ? lidar.u(h) : Math.min(nearest, lidar.u(h));
+            }
+        }
+        return nearest;
     }
 
     /** What the LIDAR shows of parked cars, in the lane frame. */

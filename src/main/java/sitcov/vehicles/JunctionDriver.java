@@ -97,7 +97,9 @@ final class JunctionDriver {
         if (d > Dynamics.stoppingDistance(car.speed()) + 2) {
             return;
         }
-        if (car.scene().occupancy().request(next.id(), car.id(), car.scene().tick(), PATIENCE)) {
+        // a stale hold is only taken over once the square is seen to be empty
+        if (!car.scene().isOccupiedByOther(next, car)
+                && car.scene().occupancy().request(next.id(), car.id(), car.scene().tick(), PATIENCE)) {
             if (held >= 0 && held != next.id()) {
                 car.scene().occupancy().release(held, car.id());
             }

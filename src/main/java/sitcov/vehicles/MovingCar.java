@@ -108,7 +108,7 @@ public final class MovingCar implements Vehicle, Steppable {
             }
         }
         limit = Math.min(limit, keepDistance(stoppedFor > IMPATIENCE));
-        stoppedFor = body.speed() == 0 ? stoppedFor + 1 : 0;
+        stoppedFor = body.speed() < 0.01 ? stoppedFor + 1 : 0;
         releaseJunctionIfLeft();
         body.approachSpeed(limit);
         body.turnTowards(bearing, Dynamics.MAX_TURN);
@@ -132,7 +132,7 @@ public final class MovingCar implements Vehicle, Steppable {
         if (d > Dynamics.stoppingDistance(body.speed()) + 2) {
             return limit;
         }
-        if (scene.occupancy().request(next.id(), id, scene.tick(), PATIENCE)) {
+        if (!scene.isOccupiedByOther(next, this) && scene.occupancy().request(next.id(), id, scene.tick(), PATIENCE)) {
             if (held >= 0) {
                 scene.occupancy().release(held, id);
             }

@@ -7,6 +7,7 @@ import java.util.random.RandomGenerator;
 import sitcov.engine.SimState;
 import sitcov.faults.FaultSwitchboard;
 import sitcov.geom.Box;
+import sitcov.world.Junction;
 import sitcov.world.Layout;
 import sitcov.world.ParkedCar;
 import sitcov.world.RoadNetwork;
@@ -109,6 +110,16 @@ public final class Scene {
     /** Every vehicle, the autonomous car first; check {@link Vehicle#isActive()} before using one. */
     public List<Vehicle> vehicles() {
         return Collections.unmodifiableList(vehicles);
+    }
+
+    /** Whether any active vehicle other than {@code self} has part of its footprint in the junction's square. */
+    boolean isOccupiedByOther(Junction junction, Vehicle self) {
+        for (Vehicle v : vehicles) {
+            if (v != self && v.isActive() && v.footprint().overlaps(junction.square())) {
+                return true;
+            }
+        }
+        return false;
     }
 
     void setAutonomousCar(AutonomousCar car) {

@@ -14,10 +14,12 @@ import sitcov.geom.Compass;
 final class Overtaker {
     static final double HEADWAY = 7;
     static final double BUFFER = 2;
-    static final double PULL_OUT = 2.5;
+    static final double PULL_OUT = 2.6;
+    static final double STRAIGHTENING = 0.3;
+    static final double START_BEFORE = 3.5;
     static final double WAIT_GAP = 6;
     /** Half the width the car sweeps, with a margin: a parked car inside it is in the car's way. */
-    static final double CORRIDOR = 1.3;
+    static final double CORRIDOR = 1.15;
     static final double PASSING_SPEED = 1.5;
     static final double TIGHT_SPEED = 0.6;
     static final double PARKED_CAR_LENGTH = 5;
@@ -71,8 +73,10 @@ final class Overtaker {
         }
         // remembered as a coordinate along the road, so it stays put while the car moves
         oppositeStart = tight ? along() + s.opposite * Lanes.forwardSign(lane) : Double.NaN;
-        double u = Math.max(1.5, s.nearest - BUFFER);
-        waypoint = createWaypoint(u, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_START);
+        // the start point is pulled out a little further than the pass itself: straightening up
+        // afterwards swings the car's front (it turns about its rear axle) back towards the kerb
+        double u = Math.max(2, s.nearest - START_BEFORE);
+        waypoint = createWaypoint(u, laneCentre + PULL_OUT + STRAIGHTENING, Waypoint.Kind.OVERTAKE_START);
         stage = OvertakingStage.START;
         pass(intent, laneCentre);
     }
@@ -100,7 +104,7 @@ final class Overtaker {
             return;
         }
         // pulling out is only done once the car is across, not merely level with the waypoint
-        boolean outFarEnough = stage != OvertakingStage.START || Math.abs(aside) < 0.4;
+        boolean outFarEnough = stage != OvertakingStage.START || Math.abs(aside) < 0.3;
         if ((ahead <= Math.max(1, car.speed() / 2) && outFarEnough) || ahead < -1) {
             advance(laneCentre, wp);
             wp = car.waypoints().lookup(waypoint);

@@ -38,6 +38,9 @@ final class TrafficSensor {
         double fy = lane.dy();
         double rx = lane.right().dx();
         double ry = lane.right().dy();
+        // the path ahead is judged along the car's own heading (it may be turning); the lanes along the lane
+        double hx = Bearing.dx(heading);
+        double hy = Bearing.dy(heading);
         for (Vehicle other : scene.vehicles()) {
             if (other == self || !other.isActive()) {
                 continue;
@@ -59,9 +62,15 @@ final class TrafficSensor {
             }
             double along = other.speed() * Math.cos(delta);
             double gap = u - extentU;
-            if (gap > -1 && Math.abs(v) < extentV + PATH_HALF_WIDTH && gap < pathGap) {
-                pathGap = Math.max(0, gap);
-                pathSpeed = along;
+            double headingDelta = Math.toRadians(other.heading() - heading);
+            double pc = Math.abs(Math.cos(headingDelta));
+            double ps = Math.abs(Math.sin(headingDelta));
+            double pathU = cx * hx + cy * hy;
+            double pathV = cx * hy - cy * hx;
+            double pathGapHere = pathU - (pc * halfL + ps * halfW);
+            if (pathGapHere > -1 && Math.abs(pathV) < ps * halfL + pc * halfW + PATH_HALF_WIDTH && pathGapHere < pathGap) {
+                pathGap = Math.max(0, pathGapHere);
+                pathSpeed = other.speed() * Math.cos(headingDelta);
             }
             boolean inOtherLane = v + extentV > laneCentre + 1.6 && v - extentV < laneCentre + 4.4;
             if (inOtherLane) {

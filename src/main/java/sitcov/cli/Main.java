@@ -27,13 +27,12 @@ public final class Main {
     static Main standard() {
         return new Main(List.of(
                 new PlannedCommand("run", "PRESET", "run an experiment preset from experiments/"),
-                new PlannedCommand("simulate", "--seed S --internal-seed I [--faults SET]",
-                        "simulate one map and print the outcome"),
+                new SimulateCommand(),
                 new MapCommand(),
                 new PlannedCommand("coverage", "--maps N", "situation coverage reached by random maps"),
                 new PlannedCommand("faults", "[--calibrate --maps N]", "list or calibrate the seeded faults"),
                 new PlannedCommand("replay", "FILE", "replay a recorded run"),
-                new PlannedCommand("bench", "", "measure ticks, runs and candidate maps per second")));
+                new BenchCommand()));
     }
 
     public static void main(String[] args) {

@@ -24,6 +24,8 @@ public final class AutonomousCar implements Vehicle, Steppable {
     static final double LOOKAHEAD = 6;
     /** Its rear axle, which it turns about, is this far behind its front. */
     static final double REAR_AXLE = 1.5;
+    /** A lane centre seen further than this to the side, outside an overtake, is not believed. */
+    static final double IMPLAUSIBLE_OFFSET = 1.3;
 
     private final Scene scene;
     private final FaultSwitchboard faults;
@@ -92,6 +94,11 @@ public final class AutonomousCar implements Vehicle, Steppable {
         if (cameraSettings != CameraSettings.STANDARD) {
             LaneEstimate correct = camera.look(body.x(), body.y(), lane, CameraSettings.STANDARD);
             CameraFaults.record(faults, !seen.equals(correct));
+        }
+        // Driving its lane, the car is never far off its lane centre: a sighting that says so is
+        // another road's lines, seen across a junction, and is not believed.
+        if (!overtaker.stage().isPassing() && Math.abs(seen.laneCentre()) > IMPLAUSIBLE_OFFSET) {
+            return LaneEstimate.NOTHING_SEEN;
         }
         return seen;
     }

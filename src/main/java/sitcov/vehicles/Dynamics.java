@@ -19,12 +19,13 @@ public final class Dynamics {
     }
 
     /**
-     * The distance a car needs to stop from {@code speed}: one tick at the current speed, then the
-     * ticks of full braking.
+     * The distance a car plans to need to stop from {@code speed} (reference §3.3): the current
+     * speed counted once more than a braking car really travels — a tick of reaction — plus the
+     * ticks of full braking: v + Σ (v − k·0.15625) over k = 0, 1, … while the term is positive.
      */
     public static double stoppingDistance(double speed) {
         double d = speed;
-        for (double v = speed - BRAKING; v > 0; v -= BRAKING) {
+        for (double v = speed; v > 0; v -= BRAKING) {
             d += v;
         }
         return d;

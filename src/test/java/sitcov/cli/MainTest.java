@@ -49,10 +49,10 @@ class MainTest {
 
     @Test
     void aPlannedCommandSaysHonestlyThatItIsNotAvailableYet() {
-        CliRunner result = CliRunner.run("bench");
+        CliRunner result = CliRunner.run("replay");
 
         assertEquals(ExitCode.FAILURE, result.exitCode());
-        assertTrue(result.err().contains("'bench' is not available yet"), result.err());
+        assertTrue(result.err().contains("'replay' is not available yet"), result.err());
     }
 
     @Test

@@ -1,0 +1,123 @@
+package sitcov.cli;
+
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import sitcov.experiment.Simulator;
+import sitcov.oracle.RunResult;
+import sitcov.world.Layout;
+import sitcov.world.MapGenerator;
+import sitcov.world.WorldMap;
+
+/**
+ * {@code bench}: how fast sitcov is on this machine, on one thread, after a warm-up: simulated
+ * ticks and runs per second over fault-free runs of maps 1..K, and candidate maps (layouts, what
+ * the coverage driver generates per candidate) per second. Prints the SPEC §10 targets beside.
+ * The only command that reads the clock for its results: timing is its point.
+ */
+final class BenchCommand implements Command {
+    static final int DEFAULT_MAPS = 40;
+    static final int DEFAULT_CANDIDATES = 20_000;
+    private static final long WARM_UP_SEED = 1_000_000L;
+
+    /** Keeps the JIT from dropping work whose result nobody reads. */
+    private static volatile long sink;
+
+    @Override
+    public String name() {
+        return "bench";
+    }
+
+    @Override
+    public String synopsis() {
+        return "[--maps K (default: " + DEFAULT_MAPS + ")] [--candidates N (default: " + DEFAULT_CANDIDATES + ")]";
+    }
+
+    @Override
+    public String summary() {
+        return "measure ticks, runs and candidate maps per second (one thread, after a warm-up)";
+    }
+
+    @Override
+    public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
+        Options options = Options.parse(name(), args, Set.of("--maps", "--candidates"), Set.of());
+        options.noPositional();
+        int maps = options.count("--maps", 1).orElse(DEFAULT_MAPS);
+        int candidates = options.count("--candidates", 1).orElse(DEFAULT_CANDIDATES);
+
+        int warmRuns = Math.min(maps, 5);
+        int warmCandidates = Math.min(candidates, 5_000);
+        err.println("bench: warming up (" + warmRuns + " runs, " + warmCandidates + " candidate maps) ...");
+        for (int i = 0; i < warmRuns; i++) {
+            sink += Simulator.run(MapGenerator.generate(WARM_UP_SEED + i), WARM_UP_SEED + i).ticks();
+        }
+        candidateNanos(WARM_UP_SEED, warmCandidates);
+
+        err.println("bench: timing " + maps + " fault-free runs and " + candidates + " candidate maps ...");
+        List<WorldMap> worlds = new ArrayList<>(maps);
+        long movingCars = 0;
+        for (long seed = 1; seed <= maps; seed++) {
+            WorldMap map = MapGenerator.generate(seed);
+            worlds.add(map);
+            movingCars += map.movingCars().size();
+        }
+        long ticks = 0;
+        long runNanos = 0;
+        for (WorldMap map : worlds) {
+            long start = System.nanoTime();
+            RunResult result = Simulator.run(map, map.seed());
+            runNanos += System.nanoTime() - start;
+            ticks += result.ticks();
+        }
+        sink += ticks;
+        long layoutNanos = candidateNanos(1, candidates);
+
+        double runSeconds = runNanos / 1e9;
+        double layoutSeconds = layoutNanos / 1e9;
+        double microsPerTick = runNanos / 1e3 / ticks;
+        double per20000 = layoutSeconds * DEFAULT_CANDIDATES / candidates;
+        out.printf(Locale.ROOT, "sitcov bench: one thread, after a warm-up of %d runs and %d candidate maps%n%n",
+                warmRuns, warmCandidates);
+        out.printf(Locale.ROOT, "  %-34s %14s   %s%n", "measure", "figure", "SPEC 10 target");
+        line(out, "simulated ticks per second", String.format(Locale.ROOT, "%.0f", ticks / runSeconds),
+                "> 50000 (follows from the tick time)");
+        line(out, "microseconds per tick", String.format(Locale.ROOT, "%.2f", microsPerTick),
+                "< 20 with 15 moving cars " + verdict(microsPerTick < 20));
+        line(out, "mean moving cars per map", String.format(Locale.ROOT, "%.1f", (double) movingCars / maps),
+                "15 (a typical map)");
+        line(out, "runs per second", String.format(Locale.ROOT, "%.2f", maps / runSeconds), "");
+        line(out, "mean ticks per run", String.format(Locale.ROOT, "%.1f", (double) ticks / maps), "");
+        line(out, "candidate maps per second", String.format(Locale.ROOT, "%.0f", candidates / layoutSeconds),
+                "> 10000 (follows from the next line)");
+        line(out, "seconds for 20000 candidates", String.format(Locale.ROOT, "%.3f", per20000),
+                "< 2 " + verdict(per20000 < 2) + (candidates == DEFAULT_CANDIDATES ? ""
+                        : " (extrapolated from " + candidates + ")"));
+        out.println();
+        out.printf(Locale.ROOT, "Runs: maps 1..%d, internal seed = external seed, no faults, %d ticks in %.2f s."
+                + " Candidates: MapGenerator.layout of seeds 1..%d in %.3f s.%n", maps, ticks, runSeconds,
+                candidates, layoutSeconds);
+        return ExitCode.OK;
+    }
+
+    private static long candidateNanos(long firstSeed, int count) {
+        long roads = 0;
+        long start = System.nanoTime();
+        for (int i = 0; i < count; i++) {
+            Layout layout = MapGenerator.layout(firstSeed + i);
+            roads += layout.roads().size();
+        }
+        long nanos = System.nanoTime() - start;
+        sink += roads;
+        return nanos;
+    }
+
+    private static String verdict(boolean met) {
+        return met ? "[met]" : "[NOT met]";
+    }
+
+    private static void line(PrintStream out, String label, String figure, String target) {
+        out.println(String.format(Locale.ROOT, "  %-34s %14s   %s", label, figure, target).stripTrailing());
+    }
+}

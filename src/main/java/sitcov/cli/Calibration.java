@@ -1,0 +1,148 @@
+package sitcov.cli;
+
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.function.LongSupplier;
+import sitcov.oracle.AccidentType;
+import sitcov.oracle.Outcome;
+import sitcov.oracle.RunResult;
+
+/**
+ * The fault-free calibration of {@code simulate --maps N}: tallies run results and prints the
+ * summary table (deterministic: no timings in it), and reports progress with an ETA on stderr.
+ */
+final class Calibration {
+    private static final int SEEDS_LISTED = 20;
+
+    private final long firstSeed;
+    private final int maps;
+    private final boolean summaryOnly;
+    private int runs;
+    private int reached;
+    private int withAccident;
+    private int withAccidentBesidesTimeout;
+    private long ticks;
+    private long excused;
+    private final Map<AccidentType, Long> events = new EnumMap<>(AccidentType.class);
+    private final Map<AccidentType, Integer> runsWith = new EnumMap<>(AccidentType.class);
+    private final List<Long> accidentSeeds = new ArrayList<>();
+
+    Calibration(long firstSeed, int maps, boolean summaryOnly) {
+        this.firstSeed = firstSeed;
+        this.maps = maps;
+        this.summaryOnly = summaryOnly;
+        for (AccidentType t : AccidentType.values()) {
+            events.put(t, 0L);
+            runsWith.put(t, 0);
+        }
+    }
+
+    void add(RunResult r) {
+        runs++;
+        ticks += r.ticks();
+        if (r.outcome() == Outcome.TARGET_REACHED) {
+            reached++;
+        }
+        if (r.hasAccident()) {
+            withAccident++;
+        }
+        if (r.accidents().stream().anyMatch(a -> a.type() != AccidentType.TIMEOUT)) {
+            withAccidentBesidesTimeout++;
+            if (accidentSeeds.size() < SEEDS_LISTED) {
+                accidentSeeds.add(r.externalSeed());
+            }
+        }
+        excused += r.excusedContacts().values().stream().mapToInt(Integer::intValue).sum();
+        for (Map.Entry<AccidentType, Long> e : r.countsByType().entrySet()) {
+            if (e.getValue() > 0) {
+                events.merge(e.getKey(), e.getValue(), Long::sum);
+                runsWith.merge(e.getKey(), 1, Integer::sum);
+            }
+        }
+    }
+
+    void printTable(PrintStream out) {
+        out.printf(Locale.ROOT, "Fault-free calibration: %d maps, external seeds %d..%d, internal seed = external seed,"
+                + " one thread%n%n", runs, firstSeed, firstSeed + runs - 1);
+        out.printf(Locale.ROOT, "  %-30s %6d%n", "runs", runs);
+        row(out, "reached the Target", reached, "target: at least 95%");
+        row(out, "any accident (incl. TIMEOUT)", withAccident, "target: at most 5%");
+        row(out, "any accident besides TIMEOUT", withAccidentBesidesTimeout, "");
+        out.printf(Locale.ROOT, "  %-30s %8.1f%n", "mean ticks", runs == 0 ? 0.0 : (double) ticks / runs);
+        out.printf(Locale.ROOT, "  %-30s %6d%n", "excused contacts (events)", excused);
+        out.println();
+        out.printf(Locale.ROOT, "  %-30s %6s  %s%n", "accident type", "events", "runs with it");
+        for (AccidentType t : AccidentType.values()) {
+            out.printf(Locale.ROOT, "  %-30s %6d  %6d %6.1f%%%n", t, events.get(t), runsWith.get(t), share(runsWith.get(t)));
+        }
+        out.println();
+        if (!accidentSeeds.isEmpty()) {
+            out.println("Seeds with an accident besides TIMEOUT" + (withAccidentBesidesTimeout > accidentSeeds.size()
+                    ? " (first " + accidentSeeds.size() + ")" : "") + ": "
+                    + String.join(", ", accidentSeeds.stream().map(String::valueOf).toList())
+                    + "; see one with: simulate --seed S --png run.png");
+        }
+        String args = "simulate --maps " + maps + " --seed " + firstSeed + (summaryOnly ? " --summary" : "");
+        out.println("Reproduce: " + Main.PROGRAM + " " + args);
+        out.println("       or: mvn -q compile exec:java -Dexec.args=\"" + args + "\"");
+    }
+
+    private void row(PrintStream out, String label, int count, String target) {
+        out.printf(Locale.ROOT, "  %-30s %6d %6.1f%%%s%n", label, count, share(count),
+                target.isEmpty() ? "" : "   (" + target + ")");
+    }
+
+    private double share(int count) {
+        return runs == 0 ? 0.0 : 100.0 * count / runs;
+    }
+
+    /**
+     * Progress of a long loop on stderr: rewritten in place with '\r' on a console, otherwise one
+     * line every 10%. The clock only feeds the ETA; nothing timed reaches stdout.
+     */
+    static final class Progress {
+        private final PrintStream err;
+        private final String what;
+        private final int total;
+        private final boolean console;
+        private final LongSupplier nanoClock;
+        private final long start;
+        private int lastDecile;
+
+        Progress(PrintStream err, String what, int total, boolean console, LongSupplier nanoClock) {
+            this.err = err;
+            this.what = what;
+            this.total = total;
+            this.console = console;
+            this.nanoClock = nanoClock;
+            this.start = nanoClock.getAsLong();
+        }
+
+        void done(int done) {
+            int decile = (int) (10L * done / total);
+            if (!console && decile == lastDecile) {
+                return;
+            }
+            lastDecile = decile;
+            double elapsed = (nanoClock.getAsLong() - start) / 1e9;
+            double eta = done == 0 ? 0 : elapsed * (total - done) / done;
+            String line = String.format(Locale.ROOT, "%s: %d/%d (%d%%), %s elapsed, ETA %s", what, done, total,
+                    100L * done / total, duration(elapsed), duration(eta));
+            if (console) {
+                err.print("\r" + line + "   " + (done == total ? System.lineSeparator() : ""));
+                err.flush();
+            } else {
+                err.println(line);
+            }
+        }
+
+        static String duration(double seconds) {
+            long s = Math.round(seconds);
+            return s < 60 ? s + " s" : String.format(Locale.ROOT, "%d min %02d s", s / 60, s % 60);
+        }
+    }
+}

@@ -1,0 +1,174 @@
+package sitcov.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.Set;
+import java.util.stream.Collectors;
+import sitcov.experiment.RunObserver;
+import sitcov.experiment.Simulator;
+import sitcov.oracle.Accident;
+import sitcov.oracle.AccidentType;
+import sitcov.oracle.RunResult;
+import sitcov.report.RunRenderer;
+import sitcov.report.TraceWriter;
+import sitcov.report.TrajectoryRecorder;
+import sitcov.world.MapGenerator;
+import sitcov.world.SituationFile;
+import sitcov.world.SituationFormatException;
+import sitcov.world.WorldMap;
+
+/**
+ * {@code simulate}: one fault-free run of a map (from a seed or a situation file), printed as one
+ * line with both seeds, optionally drawn to PNG and traced to CSV; or, with {@code --maps N}, the
+ * fault-free calibration over N maps in a row, one thread, deterministic.
+ */
+final class SimulateCommand implements Command {
+    private static final int PIXELS_PER_METRE = 6;
+
+    @Override
+    public String name() {
+        return "simulate";
+    }
+
+    @Override
+    public String synopsis() {
+        return "--seed S [--internal-seed I (default: S)] [--png FILE] [--trace FILE.csv]"
+                + " | --load FILE [--internal-seed I] [--png FILE] [--trace FILE.csv]"
+                + " | --maps N [--seed S0 (default: 1)] [--summary]";
+    }
+
+    @Override
+    public String summary() {
+        return "simulate maps fault-free and print the outcome (one map, or --maps N in a row on one thread)";
+    }
+
+    @Override
+    public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
+        Options options = Options.parse(name(), args,
+                Set.of("--seed", "--internal-seed", "--load", "--png", "--trace", "--maps"), Set.of("--summary"));
+        options.noPositional();
+        if (options.has("--maps")) {
+            return calibrate(options, out, err);
+        }
+        if (options.has("--summary")) {
+            throw new UsageException("simulate: --summary goes with --maps N; one run prints one line anyway.");
+        }
+        Optional<Long> seed = options.seed("--seed");
+        Optional<Long> internal = options.seed("--internal-seed");
+        Optional<Path> load = options.inputFile("--load");
+        if (seed.isPresent() == load.isPresent()) {
+            throw new UsageException("simulate: give either --seed S to generate a map or --load FILE to read one"
+                    + " (or --maps N for many).");
+        }
+        Optional<Path> png = options.outputFile("--png");
+        Optional<Path> trace = options.outputFile("--trace");
+
+        WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : load(load.get());
+        long internalSeed = internal.orElse(map.seed());
+        TrajectoryRecorder recorder = png.isPresent() ? new TrajectoryRecorder() : null;
+        RunResult result;
+        try (TraceWriter writer = trace.isPresent() ? new TraceWriter(trace.get(), map.seed(), internalSeed) : null) {
+            RunObserver observer = (tick, scene, detector) -> {
+                if (recorder != null) {
+                    recorder.afterTick(tick, scene, detector);
+                }
+                if (writer != null) {
+                    writer.afterTick(tick, scene, detector);
+                }
+            };
+            result = Simulator.run(map, internalSeed, Set.of(), observer).result();
+        } catch (IOException | UncheckedIOException e) {
+            err.println("sitcov: simulate: could not write the trace " + trace.orElse(null) + ": " + e.getMessage());
+            return ExitCode.FAILURE;
+        }
+        out.println(resultLine(result));
+        trace.ifPresent(t -> out.println("Trace written to " + t + " (" + result.ticks() + " ticks, one row each)"));
+        if (png.isPresent()) {
+            try {
+                RunRenderer renderer = new RunRenderer(PIXELS_PER_METRE);
+                renderer.writePng(renderer.render(map, recorder, result), png.get());
+            } catch (IOException e) {
+                err.println("sitcov: simulate: could not write " + png.get() + ": " + e.getMessage());
+                return ExitCode.FAILURE;
+            }
+            out.println("Run drawn to " + png.get());
+        }
+        return ExitCode.OK;
+    }
+
+    private int calibrate(Options options, PrintStream out, PrintStream err) throws UsageException {
+        for (String single : List.of("--internal-seed", "--load", "--png", "--trace")) {
+            if (options.has(single)) {
+                throw new UsageException("simulate: " + single + " goes with one run, not with --maps N; drop it,"
+                        + " or simulate one of the maps with --seed S.");
+            }
+        }
+        int maps = options.count("--maps", 1).orElseThrow();
+        long first = options.seed("--seed").orElse(1L);
+        if (first > Long.MAX_VALUE - (maps - 1)) {
+            throw new UsageException("simulate: seeds " + first + " + " + maps + " maps run past the largest seed;"
+                    + " choose a smaller --seed.");
+        }
+        boolean perRun = !options.has("--summary");
+        Calibration calibration = new Calibration(first, maps, !perRun);
+        Calibration.Progress progress = new Calibration.Progress(err, "simulate", maps,
+                err == System.err && System.console() != null, System::nanoTime);
+        for (int i = 0; i < maps; i++) {
+            long seed = first + i;
+            RunResult result = Simulator.run(MapGenerator.generate(seed), seed);
+            calibration.add(result);
+            if (perRun) {
+                out.println(resultLine(result));
+            }
+            progress.done(i + 1);
+        }
+        if (perRun) {
+            out.println();
+        }
+        calibration.printTable(out);
+        return ExitCode.OK;
+    }
+
+    /** The one-line result of a run: both seeds, outcome, ticks and every accident event. */
+    static String resultLine(RunResult r) {
+        StringBuilder s = new StringBuilder()
+                .append("seed ").append(r.externalSeed()).append(" internal ").append(r.internalSeed()).append(": ")
+                .append(r.outcome()).append(" after ").append(r.ticks()).append(" ticks; accidents: ");
+        if (r.accidents().isEmpty()) {
+            s.append("none");
+        } else {
+            s.append(r.accidents().size()).append(" (")
+                    .append(r.accidents().stream().map(SimulateCommand::describe).collect(Collectors.joining("; ")))
+                    .append(')');
+        }
+        int excused = r.excusedContacts().values().stream().mapToInt(Integer::intValue).sum();
+        if (excused > 0) {
+            s.append("; excused contacts: ").append(excused);
+        }
+        return s.toString();
+    }
+
+    private static String describe(Accident a) {
+        String where = String.format(Locale.ROOT, "%s t=%d at (%.1f, %.1f)", a.type(), a.tick(), a.x(), a.y());
+        if (a.otherParty() < 0) {
+            return where;
+        }
+        return where + " with " + (a.type() == AccidentType.CLASHWITHOBSTACLE ? "parked car "
+                : a.type() == AccidentType.CLASHWITHOTHERCAR ? "moving car " : "party ") + a.otherParty();
+    }
+
+    private static WorldMap load(Path file) throws UsageException {
+        try {
+            return SituationFile.read(file);
+        } catch (SituationFormatException e) {
+            throw new UsageException("simulate: " + e.getMessage());
+        } catch (IOException e) {
+            throw new UsageException("simulate: cannot read " + file + ": " + e.getMessage());
+        }
+    }
+}

@@ -1,0 +1,128 @@
+package sitcov.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import sitcov.report.TraceWriter;
+
+class SimulateCommandTest {
+    @TempDir
+    Path folder;
+
+    @Test
+    void oneRunPrintsOneLineWithBothSeedsAndTheOutcome() {
+        CliRunner result = CliRunner.run("simulate", "--seed", "3", "--internal-seed", "100");
+
+        assertEquals(ExitCode.OK, result.exitCode(), result.err());
+        assertEquals(1, result.out().lines().count(), result.out());
+        assertTrue(result.out().startsWith("seed 3 internal 100: "), result.out());
+        assertTrue(result.out().contains("TARGET_REACHED") || result.out().contains("TIMEOUT"), result.out());
+        assertTrue(result.out().contains(" ticks; accidents: "), result.out());
+    }
+
+    @Test
+    void theInternalSeedDefaultsToTheExternalSeed() {
+        CliRunner result = CliRunner.run("simulate", "--seed", "3");
+
+        assertEquals(ExitCode.OK, result.exitCode(), result.err());
+        assertTrue(result.out().startsWith("seed 3 internal 3: "), result.out());
+    }
+
+    @Test
+    void theSameCommandTwicePrintsTheSameOutput() {
+        CliRunner first = CliRunner.run("simulate", "--seed", "4", "--internal-seed", "9");
+        CliRunner second = CliRunner.run("simulate", "--seed", "4", "--internal-seed", "9");
+
+        assertEquals(ExitCode.OK, first.exitCode(), first.err());
+        assertEquals(first.out(), second.out());
+    }
+
+    @Test
+    void pngAndTraceAreWrittenAndNamed() throws Exception {
+        Path png = folder.resolve("run.png");
+        Path trace = folder.resolve("run.csv");
+
+        CliRunner result = CliRunner.run("simulate", "--seed", "3", "--internal-seed", "100",
+                "--png", png.toString(), "--trace", trace.toString());
+
+        assertEquals(ExitCode.OK, result.exitCode(), result.err());
+        assertTrue(Files.size(png) > 1000);
+        List<String> rows = Files.readAllLines(trace);
+        assertEquals(TraceWriter.HEADER, rows.get(0));
+        assertTrue(rows.size() > 1);
+        assertTrue(rows.get(1).startsWith("3,100,0,"), rows.get(1));
+        assertTrue(result.out().contains("Trace written to " + trace), result.out());
+        assertTrue(result.out().contains("Run drawn to " + png), result.out());
+    }
+
+    @Test
+    void aLoadedSituationFileGivesTheSameResultAsItsSeed() {
+        Path situation = folder.resolve("three.situation");
+        assertEquals(ExitCode.OK, CliRunner.run("map", "--seed", "3", "--save", situation.toString()).exitCode());
+
+        CliRunner loaded = CliRunner.run("simulate", "--load", situation.toString(), "--internal-seed", "100");
+        CliRunner seeded = CliRunner.run("simulate", "--seed", "3", "--internal-seed", "100");
+
+        assertEquals(ExitCode.OK, loaded.exitCode(), loaded.err());
+        assertEquals(seeded.out(), loaded.out());
+    }
+
+    @Test
+    void theCalibrationSummarisesItsRunsAndSaysHowToReproduceThem() {
+        CliRunner result = CliRunner.run("simulate", "--maps", "3", "--summary");
+
+        assertEquals(ExitCode.OK, result.exitCode(), result.err());
+        assertTrue(result.out().startsWith("Fault-free calibration: 3 maps, external seeds 1..3"), result.out());
+        assertTrue(result.out().lines().anyMatch(l -> l.matches("\\s*runs\\s+3")), result.out());
+        assertTrue(result.out().contains("reached the Target"), result.out());
+        assertTrue(result.out().contains("mean ticks"), result.out());
+        for (String type : new String[] {"CLASHWITHOBSTACLE", "CLASHWITHOTHERCAR", "LEAVEROAD", "CROSSCENTRELINE"}) {
+            assertTrue(result.out().contains(type), type + " missing from:\n" + result.out());
+        }
+        assertTrue(result.out().contains("Reproduce: sitcov simulate --maps 3 --seed 1 --summary"), result.out());
+        assertFalse(result.out().contains("seed 1 internal 1:"), "--summary leaves out the per-run lines");
+        assertTrue(result.err().contains("simulate: 3/3 (100%)"), result.err());
+    }
+
+    @Test
+    void withoutSummaryTheCalibrationAlsoPrintsEveryRun() {
+        CliRunner result = CliRunner.run("simulate", "--maps", "2", "--seed", "7");
+
+        assertEquals(ExitCode.OK, result.exitCode(), result.err());
+        assertTrue(result.out().startsWith("seed 7 internal 7: "), result.out());
+        assertTrue(result.out().contains("\nseed 8 internal 8: "), result.out());
+        assertTrue(result.out().contains("Reproduce: sitcov simulate --maps 2 --seed 7\n"), result.out());
+    }
+
+    @Test
+    void badInputIsRefusedWithTheFix() {
+        assertRefused("--maps needs a whole number of at least 1, not '-5'", "--maps", "-5");
+        assertRefused("--seed needs a whole number such as 42", "--seed", "five");
+        assertRefused("--internal-seed needs a whole number such as 42", "--seed", "5", "--internal-seed", "x");
+        assertRefused("give either --seed S to generate a map or --load FILE", "--internal-seed", "7");
+        assertRefused("(no such file); check the path", "--load", folder.resolve("nope.situation").toString());
+        assertRefused("does not exist; create it first",
+                "--seed", "1", "--png", folder.resolve("missing").resolve("run.png").toString());
+        assertRefused("--png goes with one run, not with --maps N", "--maps", "3", "--png", "x.png");
+        assertRefused("--summary goes with --maps N", "--seed", "1", "--summary");
+    }
+
+    private static void assertRefused(String fix, String... args) {
+        String[] all = new String[args.length + 1];
+        all[0] = "simulate";
+        System.arraycopy(args, 0, all, 1, args.length);
+
+        CliRunner result = CliRunner.run(all);
+
+        assertEquals(ExitCode.USAGE, result.exitCode(), String.join(" ", all));
+        assertTrue(result.err().startsWith("sitcov: simulate: "), result.err());
+        assertTrue(result.err().contains(fix), result.err());
+        assertEquals("", result.out());
+    }
+}

@@ -1,0 +1,90 @@
+package sitcov.vehicles;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+
+/** The shared dynamics: stopping distances, their inverse, and how fast a car gets going. */
+class DynamicsTest {
+
+    @Test
+    void theStoppingDistanceAtFullSpeedIsTheReferences() {
+        // reference §3.3: sd = v + Σ_{k=0,1,…} (v − k·0.15625) while the term is positive.
+        // At v = 2.5 the terms are positive for k = 0..15 (2.5 / 0.15625 = 16):
+        // Σ = 16·2.5 − 0.15625·(0 + 1 + … + 15) = 40 − 0.15625·120 = 40 − 18.75 = 21.25,
+        // sd = 2.5 + 21.25 = 23.75
+        assertEquals(23.75, Dynamics.stoppingDistance(Dynamics.MAX_SPEED), 1e-9);
+    }
+
+    @Test
+    void theStoppingDistanceIsWhatABrakingCarReallyTravelsPlusATickOfReaction() {
+        // the reference counts the current speed once more than a braking car travels: checked
+        // against the Body the cars drive, for every speed a car can reach (0.1 steps), which
+        // rolls one tick, then brakes every tick until it stands
+        for (int k = 0; k <= 25; k++) {
+            Body body = new Body(0, 0, 90, 1.5);
+            for (int i = 0; i < k; i++) {
+                body.accelerate();
+            }
+            double v = body.speed();
+            body.move();
+            while (body.speed() > 0) {
+                body.brake();
+                body.move();
+            }
+            assertEquals(body.x() + v, Dynamics.stoppingDistance(v), 1e-9, "stopping distance from " + v);
+        }
+    }
+
+    @Test
+    void speedToStopWithinNeverGivesASpeedThatNeedsMoreRoomThanThat() {
+        for (int i = 0; i <= 4000; i++) {
+            double d = i * 0.01; // 0 .. 40 m
+            double v = Dynamics.speedToStopWithin(d);
+            assertTrue(v >= 0 && v <= Dynamics.MAX_SPEED, "speed " + v + " for " + d + " m");
+            assertTrue(Dynamics.stoppingDistance(v) <= d + 1e-9,
+                    "within " + d + " m it allows " + v + ", which needs " + Dynamics.stoppingDistance(v) + " m");
+        }
+    }
+
+    @Test
+    void withRoomForAFullSpeedStopFullSpeedIsAllowed() {
+        double full = Dynamics.stoppingDistance(Dynamics.MAX_SPEED);
+        assertEquals(Dynamics.MAX_SPEED, Dynamics.speedToStopWithin(full), 1e-12);
+        assertEquals(Dynamics.MAX_SPEED, Dynamics.speedToStopWithin(full + 10), 1e-12);
+        assertEquals(0, Dynamics.speedToStopWithin(0));
+        assertEquals(0, Dynamics.speedToStopWithin(-3));
+    }
+
+    @Test
+    void fromStandstillFullSpeedIsReachedInTwentyFiveTicks() {
+        // 2.5 m/tick at +0.1 m/tick per tick: 2.5 / 0.1 = 25 ticks
+        Body body = new Body(0, 0, 90, 1.5);
+        for (int tick = 1; tick <= 24; tick++) {
+            body.approachSpeed(Dynamics.MAX_SPEED);
+            assertEquals(0.1 * tick, body.speed(), 1e-9, "speed after tick " + tick);
+        }
+        assertTrue(body.speed() < Dynamics.MAX_SPEED);
+        body.approachSpeed(Dynamics.MAX_SPEED);
+        assertEquals(Dynamics.MAX_SPEED, body.speed(), 1e-12);
+        body.approachSpeed(Dynamics.MAX_SPEED);
+        body.accelerate();
+        assertEquals(Dynamics.MAX_SPEED, body.speed(), 1e-12, "never faster than full speed");
+    }
+
+    @Test
+    void brakingFromFullSpeedTakesSixteenTicks() {
+        // 2.5 / 0.15625 = 16 ticks, exactly (both are binary fractions)
+        Body body = new Body(0, 0, 90, 1.5);
+        for (int i = 0; i < 25; i++) {
+            body.accelerate();
+        }
+        for (int tick = 1; tick <= 15; tick++) {
+            body.brake();
+            assertTrue(body.speed() > 0, "stopped after only " + tick + " ticks");
+        }
+        body.brake();
+        assertEquals(0, body.speed());
+    }
+}

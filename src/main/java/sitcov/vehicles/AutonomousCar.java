@@ -212,6 +212,11 @@ public final class AutonomousCar implements Vehicle, Steppable {
         return intent.bearing();
     }
 
+    /** The junction manoeuvre under way, in words (empty when none). */
+    public String junctionManoeuvre() {
+        return junctions.describe();
+    }
+
     /** Which behaviour steered in the last tick. */
     public String steeredBy() {
         return intent.steeredBy();

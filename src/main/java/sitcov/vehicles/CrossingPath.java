@@ -79,6 +79,12 @@ final class CrossingPath {
             Compass across = arrival.right();
             double tx = jx + arrival.dx() * U_TURN_BEYOND_CENTRE + across.dx() * U_TURN_ACROSS_CENTRE;
             double ty = jy + arrival.dy() * U_TURN_BEYOND_CENTRE + across.dy() * U_TURN_ACROSS_CENTRE;
+            // a car that has already rolled past the turning point turns where it is
+            double overshoot = ((x0 - arrival.dx() * axle) - tx) * arrival.dx() + ((y0 - arrival.dy() * axle) - ty) * arrival.dy();
+            if (overshoot > 0) {
+                tx += arrival.dx() * overshoot;
+                ty += arrival.dy() * overshoot;
+            }
             path.straightTo(tx, ty);
             path.turnOnTheSpot(Bearing.between(tx, ty, endX, endY), false);
             path.straightTo(endX, endY);
@@ -88,9 +94,16 @@ final class CrossingPath {
             double cy = arrival.isNorthSouth() ? wy : y0;
             boolean left = exit == arrival.left();
             double r = left ? LEFT_TURN_RADIUS : RIGHT_TURN_RADIUS;
-            path.straightTo(cx - arrival.dx() * r, cy - arrival.dy() * r);
-            path.arc(cx - arrival.dx() * r + exit.dx() * r, cy - arrival.dy() * r + exit.dy() * r, r,
-                    left ? Math.PI / 2 : -Math.PI / 2);
+            double sx = cx - arrival.dx() * r;
+            double sy = cy - arrival.dy() * r;
+            // a car that has already rolled past where the arc begins starts it where it is
+            double overshoot = ((x0 - arrival.dx() * axle) - sx) * arrival.dx() + ((y0 - arrival.dy() * axle) - sy) * arrival.dy();
+            if (overshoot > 0) {
+                sx += arrival.dx() * overshoot;
+                sy += arrival.dy() * overshoot;
+            }
+            path.straightTo(sx, sy);
+            path.arc(sx + exit.dx() * r, sy + exit.dy() * r, r, left ? Math.PI / 2 : -Math.PI / 2);
             path.straightTo(endX, endY);
         }
         path.straightTo(wx + exit.dx() * (TAIL - axle), wy + exit.dy() * (TAIL - axle));

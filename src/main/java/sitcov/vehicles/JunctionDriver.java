@@ -23,6 +23,8 @@ final class JunctionDriver {
     /** Ticks after which another vehicle's hold on a junction is taken to be stale. */
     static final long PATIENCE = 80;
     static final double EXIT_BEYOND_SQUARE = 1.5;
+    /** While crossing, a junction whose square begins within this distance is asked for already. */
+    static final double LOOK_BEYOND = 12;
     /** A crossing that has taken the car this far from the junction's centre has gone wrong: give it up. */
     static final double STRAYED = 12;
 
@@ -31,6 +33,9 @@ final class JunctionDriver {
     private final RandomGenerator decisions;
     private final int[][] exitsTaken;
     private int held = -1;
+    private int reserved = -1;
+    private Compass reservedExit;
+    private int crossingJunction = -1;
     private Compass arrival;
     private Compass exit;
     private int waypoint;
@@ -55,6 +60,14 @@ final class JunctionDriver {
         return waiting;
     }
 
+    /** The junction manoeuvre under way, in words, for traces: e.g. "junction 5: WEST to EAST". */
+    String describe() {
+        if (crossing) {
+            return "junction " + held + ": " + arrival + " to " + exit;
+        }
+        return waiting ? "waiting" : held >= 0 ? "holding junction " + held : "";
+    }
+
     /** Lets go of the junction once the car's whole footprint has left its square. */
     void releaseIfLeft() {
         if (held >= 0 && !crossing) {
@@ -70,27 +83,56 @@ final class JunctionDriver {
         waiting = false;
         if (crossing) {
             cross(intent);
+            lookBeyond(intent);
             return;
         }
         Road road = car.road(lane);
         if (road == null) {
             return;
         }
-        Junction next = Lanes.nextJunction(car.scene().network(), road, lane, car.x(), car.y());
-        if (next == null || !recognises(next)) {
+        Junction next = Lanes.nextJunction(car.scene().network(), road, lane, car.x(), car.y(), -1);
+        if (next != null && recognises(next)) {
+            approach(intent, lane, next, Lanes.distanceToSquare(next, lane, car.x(), car.y()));
+        }
+    }
+
+    /** While crossing, asks in good time for a junction that follows right after this one. */
+    private void lookBeyond(Intent intent) {
+        if (!crossing) {
             return;
         }
-        double d = Lanes.distanceToSquare(next, lane, car.x(), car.y());
+        Road road = Lanes.roadAlong(car.scene().network(), car.x(), car.y(), exit);
+        Junction next = road == null ? null
+                : Lanes.nextJunction(car.scene().network(), road, exit, car.x(), car.y(), held);
+        if (next != null && recognises(next)) {
+            double d = Lanes.distanceToSquare(next, exit, car.x(), car.y());
+            if (d < LOOK_BEYOND) {
+                approach(intent, exit, next, d);
+            }
+        }
+    }
+
+    private void approach(Intent intent, Compass lane, Junction next, double d) {
         if (d > sitcov.world.Dimensions.APPROACH_LENGTH) {
             return;
         }
         intent.limit(APPROACH_SPEED + Math.sqrt(2 * Dynamics.BRAKING * Math.max(0, d - 5)), "junction");
-        if (held == next.id()) {
-            if (d <= 0) {
+        if (next.id() == reserved && !crossing) {
+            // the junction asked for while crossing the one before becomes the one held
+            if (held >= 0) {
+                car.scene().occupancy().release(held, car.id());
+            }
+            held = reserved;
+            exit = reservedExit;
+            reserved = -1;
+        }
+        if (next.id() == held || next.id() == reserved) {
+            if (d <= 0 && !crossing) {
                 startCrossing(next, lane);
                 cross(intent);
             } else {
-                intent.limit(entrySpeed(lane) + 0.5 * Dynamics.speedToStopWithin(d), "junction");
+                intent.limit(entrySpeed(lane, next.id() == held ? exit : reservedExit)
+                        + 0.5 * Dynamics.speedToStopWithin(d), "junction");
             }
             return;
         }
@@ -100,13 +142,18 @@ final class JunctionDriver {
         // a stale hold is only taken over once the square is seen to be empty
         if (!car.scene().isOccupiedByOther(next, car)
                 && car.scene().occupancy().request(next.id(), car.id(), car.scene().tick(), PATIENCE)) {
-            if (held >= 0 && held != next.id()) {
-                car.scene().occupancy().release(held, car.id());
+            Compass chosen = chooseExit(next);
+            if (crossing) {
+                reserved = next.id();
+                reservedExit = chosen;
+            } else {
+                if (held >= 0 && held != next.id()) {
+                    car.scene().occupancy().release(held, car.id());
+                }
+                held = next.id();
+                exit = chosen;
             }
-            held = next.id();
-            arrival = lane;
-            exit = chooseExit(next);
-            intent.limit(entrySpeed(lane) + 0.5 * Dynamics.speedToStopWithin(d), "junction");
+            intent.limit(entrySpeed(lane, chosen) + 0.5 * Dynamics.speedToStopWithin(d), "junction");
             return;
         }
         waiting = true;
@@ -166,7 +213,7 @@ final class JunctionDriver {
         }
         path.turned(car.heading());
         intent.steer(path.bearing(car.x(), car.y(), car.heading(), car.speed()), "junction");
-        double speed = entrySpeed(arrival);
+        double speed = entrySpeed(arrival, exit);
         intent.limit(speed, "junction");
         if (path.isTurningOnTheSpot()) {
             intent.limit(0, "junction");
@@ -179,7 +226,7 @@ final class JunctionDriver {
     }
 
     /** How fast to enter and cross: straight on is quickest; left turns and U-turns crawl. */
-    private double entrySpeed(Compass lane) {
+    private static double entrySpeed(Compass lane, Compass exit) {
         if (exit == lane) {
             return STRAIGHT_SPEED;
         }

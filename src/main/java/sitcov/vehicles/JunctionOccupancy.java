@@ -40,7 +40,7 @@ public final class JunctionOccupancy {
     }
 
     public void release(int junction, int vehicle) {
-        if (holder[junction] == vehicle) {
+        if (junction >= 0 && holder[junction] == vehicle) {
             holder[junction] = FREE;
         }
     }

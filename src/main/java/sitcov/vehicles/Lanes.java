@@ -53,10 +53,15 @@ final class Lanes {
      * when driving {@code direction}, or null.
      */
     static Junction nextJunction(RoadNetwork network, Road road, Compass direction, double x, double y) {
+        return nextJunction(network, road, direction, x, y, -1);
+    }
+
+    /** The same, passing over the junction with id {@code skip}. */
+    static Junction nextJunction(RoadNetwork network, Road road, Compass direction, double x, double y, int skip) {
         Junction best = null;
         double bestDistance = Double.MAX_VALUE;
         for (Junction junction : network.junctions()) {
-            if (!road.carries(junction.centre())) {
+            if (junction.id() == skip || !road.carries(junction.centre())) {
                 continue;
             }
             double d = distanceToSquare(junction, direction, x, y);

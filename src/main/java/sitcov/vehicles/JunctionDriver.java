@@ -17,9 +17,9 @@ import sitcov.world.Road;
  * U-turn through the square.
  */
 final class JunctionDriver {
-    static final double APPROACH_SPEED = 1.25;
-    static final double STRAIGHT_SPEED = 0.8;
-    static final double RIGHT_TURN_SPEED = 0.6;
+    static final double APPROACH_SPEED = 2.0;
+    static final double STRAIGHT_SPEED = 1.5;
+    static final double RIGHT_TURN_SPEED = 0.8;
     /** Ticks after which another vehicle's hold on a junction is taken to be stale. */
     static final long PATIENCE = 80;
     static final double EXIT_BEYOND_SQUARE = 1.5;

@@ -17,6 +17,8 @@ final class TargetSeeker {
     static final double DIRECT_DISTANCE = 4.5;
     /** How far the car's front centre may move off its lane centre and keep its body in the lane. */
     static final double LATERAL_FREEDOM = 0.45;
+    /** A Target further than this to the side of the car cannot be reached without changing lane. */
+    static final double REACHABLE_ASIDE = 1.4;
 
     private final AutonomousCar car;
     private final FaultSwitchboard faults;
@@ -31,6 +33,11 @@ final class TargetSeeker {
         double u = LaneFrame.u(lane, car.x(), car.y(), target.position().x(), target.position().y());
         double v = LaneFrame.v(lane, car.x(), car.y(), target.position().x(), target.position().y());
         if (u < -1 || u > SEEK_DISTANCE) {
+            return;
+        }
+        // turning through a junction the lane frame means little, and passing parked cars the car
+        // is out in the other lane: it heads for the Target only once it can reach it from its lane
+        if (car.isCrossingJunction() || (car.overtakingStage().isPassing() && Math.abs(v) > REACHABLE_ASIDE)) {
             return;
         }
         double laneCentre = estimate.laneCentre();

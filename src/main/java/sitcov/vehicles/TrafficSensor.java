@@ -13,6 +13,8 @@ final class TrafficSensor {
     static final double RANGE = 100;
     static final double NEAR_RANGE = 25;
     static final double FIELD = 45;
+    /** Close by, the car sees all round (its mirrors): a car alongside or just behind is seen too. */
+    static final double ALL_ROUND = 10;
     /** Half the corridor a 2 m car sweeps, plus a margin. */
     static final double PATH_HALF_WIDTH = 1.3;
 
@@ -86,6 +88,9 @@ final class TrafficSensor {
     }
 
     private static boolean inField(double cx, double cy, double heading, double distance) {
+        if (distance <= ALL_ROUND) {
+            return true;
+        }
         if (distance <= NEAR_RANGE) {
             return Math.abs(Bearing.turn(heading, Bearing.between(0, 0, cx, cy))) <= 90;
         }

@@ -31,6 +31,29 @@ public final class Dynamics {
         return d;
     }
 
+    /**
+     * The highest speed from which a car can slow to {@code target} within {@code distance}: a tick
+     * of reaction, then full braking.
+     */
+    public static double speedToSlowTo(double target, double distance) {
+        if (distance <= 0) {
+            return target;
+        }
+        double v = target;
+        while (v < MAX_SPEED && slowingDistance(v + 0.01, target) <= distance) {
+            v += 0.01;
+        }
+        return v;
+    }
+
+    private static double slowingDistance(double from, double target) {
+        double d = from;
+        for (double v = from; v > target; v -= BRAKING) {
+            d += v;
+        }
+        return d;
+    }
+
     /** The highest speed from which a car can still stop within {@code distance}. */
     public static double speedToStopWithin(double distance) {
         if (distance <= 0) {

@@ -116,7 +116,7 @@ final class JunctionDriver {
         if (d > sitcov.world.Dimensions.APPROACH_LENGTH) {
             return;
         }
-        intent.limit(APPROACH_SPEED + Math.sqrt(2 * Dynamics.BRAKING * Math.max(0, d - 5)), "junction");
+        intent.limit(Dynamics.speedToSlowTo(APPROACH_SPEED, d), "junction");
         if (next.id() == reserved && !crossing) {
             // the junction asked for while crossing the one before becomes the one held
             if (held >= 0) {
@@ -131,8 +131,8 @@ final class JunctionDriver {
                 startCrossing(next, lane);
                 cross(intent);
             } else {
-                intent.limit(entrySpeed(lane, next.id() == held ? exit : reservedExit)
-                        + 0.5 * Dynamics.speedToStopWithin(d), "junction");
+                intent.limit(Dynamics.speedToSlowTo(entrySpeed(lane, next.id() == held ? exit : reservedExit), d),
+                        "junction");
             }
             return;
         }
@@ -153,7 +153,7 @@ final class JunctionDriver {
                 held = next.id();
                 exit = chosen;
             }
-            intent.limit(entrySpeed(lane, chosen) + 0.5 * Dynamics.speedToStopWithin(d), "junction");
+            intent.limit(Dynamics.speedToSlowTo(entrySpeed(lane, chosen), d), "junction");
             return;
         }
         waiting = true;

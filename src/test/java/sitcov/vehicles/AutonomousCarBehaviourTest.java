@@ -1,0 +1,116 @@
+package sitcov.vehicles;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import sitcov.engine.SimState;
+import sitcov.experiment.RunRecord;
+import sitcov.experiment.Simulator;
+import sitcov.faults.FaultSwitchboard;
+import sitcov.geom.Compass;
+import sitcov.geom.Vec2;
+import sitcov.oracle.AccidentDetector;
+import sitcov.oracle.Outcome;
+import sitcov.oracle.RunResult;
+import sitcov.world.Junction;
+import sitcov.world.Layout;
+import sitcov.world.Situations;
+import sitcov.world.StartPose;
+import sitcov.world.Target;
+import sitcov.world.WorldMap;
+
+/** The autonomous car's behaviours, each on a hand-built situation whose right outcome is plain. */
+class AutonomousCarBehaviourTest {
+
+    @Test
+    void itReachesATargetInItsLaneAndStopsOnIt() {
+        RunResult result = Simulator.run(Situations.withoutTraffic(Situations.straight(List.of())), 1);
+
+        assertEquals(Outcome.TARGET_REACHED, result.outcome());
+        assertEquals(List.of(), result.accidents());
+        // 110 m at up to 2.5 m a tick, starting and stopping: well under 200 ticks
+        assertTrue(result.ticks() < 200, "took " + result.ticks() + " ticks");
+    }
+
+    @Test
+    void itTurnsRoundAtADeadEndToReachATargetBehindItInTheOtherLane() {
+        // the Target is in the west-bound lane (y = 51.5) behind the east-bound start: the car must
+        // drive to the east dead end (square x 174..180), turn round there, and come back
+        Layout layout = Situations.layout(List.of(Situations.straightRoad()), Situations.straightRoadDeadEnds(), List.of(),
+                new Target(new Vec2(60, 51.5), 0), new StartPose(new Vec2(40, 48.5), Compass.EAST));
+        List<double[]> poses = new ArrayList<>();
+
+        RunRecord run = Simulator.run(Situations.withoutTraffic(layout), 1, Set.of(),
+                (tick, scene, detector) -> poses.add(new double[] {scene.autonomousCar().x(), scene.autonomousCar().heading()}));
+
+        assertEquals(Outcome.TARGET_REACHED, run.result().outcome());
+        assertEquals(List.of(), run.result().accidents());
+        double farthest = poses.stream().mapToDouble(p -> p[0]).max().orElseThrow();
+        assertTrue(farthest > 174 && farthest <= 180, "turned at x = " + farthest);
+        assertEquals(270, poses.get(poses.size() - 1)[1], 10, "it comes back heading west");
+    }
+
+    @Test
+    void itWaitsBehindAParkedCarWhileAnOncomingCarPassesThenOvertakes() {
+        // parked car in the east-bound lane at x 77.5..82.5; a moving car comes west in the other lane
+        Layout layout = Situations.straight(List.of(Situations.parkedInEastboundLane(0, 80)));
+        WorldMap map = Situations.withTraffic(layout, List.of(new StartPose(new Vec2(110, 51.5), Compass.WEST)));
+        List<OvertakingStage> stages = new ArrayList<>();
+        List<double[]> whenStarted = new ArrayList<>();
+
+        RunRecord run = Simulator.run(map, 1, Set.of(), (tick, scene, detector) -> {
+            AutonomousCar car = scene.autonomousCar();
+            OvertakingStage stage = car.overtakingStage();
+            if (stages.isEmpty() || stages.get(stages.size() - 1) != stage) {
+                stages.add(stage);
+                if (stage == OvertakingStage.START) {
+                    whenStarted.add(new double[] {car.x(), scene.movingCars().get(0).x()});
+                }
+            }
+        });
+
+        assertEquals(Outcome.TARGET_REACHED, run.result().outcome());
+        assertEquals(List.of(), run.result().accidents());
+        int waiting = stages.indexOf(OvertakingStage.WAITING);
+        int start = stages.indexOf(OvertakingStage.START);
+        assertTrue(waiting >= 0 && start > waiting, "stages " + stages);
+        assertTrue(whenStarted.get(0)[1] < whenStarted.get(0)[0],
+                "pulled out only once the oncoming car had gone by: car at x " + whenStarted.get(0)[0]
+                        + ", oncoming car at x " + whenStarted.get(0)[1]);
+        assertTrue(stages.containsAll(List.of(OvertakingStage.PULLED_OUT, OvertakingStage.FINISH)), "stages " + stages);
+    }
+
+    @Test
+    void itWaitsAtTheEdgeOfAnOccupiedJunctionUntilTheHoldGoesStale() {
+        // the tee's junction is held by a vehicle that never comes: the car waits at the square's
+        // edge (x = 97) and goes on only once the hold is older than its patience and the square empty
+        WorldMap map = Situations.withoutTraffic(Situations.tee());
+        SimState state = new SimState(1);
+        Scene scene = Scene.start(map, state, FaultSwitchboard.none());
+        Junction tee = map.layout().junctions().get(0);
+        scene.occupancy().request(tee.id(), 99, 0, 0);
+        AccidentDetector detector = new AccidentDetector(scene);
+        state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
+        long firstWait = -1;
+        double frontWhileWaiting = 0;
+        while (state.step() && state.tick() < 400) {
+            AutonomousCar car = scene.autonomousCar();
+            if (car.isWaitingAtJunction()) {
+                firstWait = firstWait < 0 ? state.tick() : firstWait;
+                frontWhileWaiting = Math.max(frontWhileWaiting, car.x());
+            }
+        }
+
+        assertTrue(firstWait >= 0, "the car never waited");
+        assertTrue(frontWhileWaiting <= 97, "crept into the held square: front at x = " + frontWhileWaiting);
+        assertTrue(scene.autonomousCar().x() > 97 || scene.autonomousCar().y() > 33,
+                "it went on once the hold was stale");
+        assertFalse(scene.occupancy().isHeldBy(tee.id(), 99));
+        assertEquals(List.of(), detector.accidents());
+    }
+}

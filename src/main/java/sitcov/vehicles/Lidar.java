@@ -3,6 +3,7 @@ package sitcov.vehicles;
 import sitcov.geom.Box;
 import sitcov.geom.Compass;
 import sitcov.geom.Rays;
+import sitcov.world.Dimensions;
 import sitcov.world.RoadNetwork;
 
 /**
@@ -42,8 +43,12 @@ final class Lidar {
         hits = 0;
         int n = 0;
         double reachSq = (RANGE + 5) * (RANGE + 5);
+        double fx = Math.sin(Math.toRadians(centreBearing));
+        double fy = Math.cos(Math.toRadians(centreBearing));
         for (Box body : scene.parkedBodies()) {
-            if (n < MAX_OBJECTS && distanceSq(body, x, y) <= reachSq) {
+            // the fan looks forward: a parked car wholly behind the sensor cannot be hit
+            double ahead = (body.centre().x() - x) * fx + (body.centre().y() - y) * fy;
+            if (n < MAX_OBJECTS && ahead > -Dimensions.CAR_LENGTH && distanceSq(body, x, y) <= reachSq) {
                 objectParked[n] = true;
                 objects[n++] = body;
             }
@@ -58,6 +63,14 @@ final class Lidar {
         if (n == 0) {
             return 0;
         }
+        boolean anyParked = false;
+        for (int k = 0; k < n && !anyParked; k++) {
+            anyParked = objectParked[k];
+        }
+        if (!anyParked) {
+            // moving cars matter to this sensor only as what hides parked cars
+            return 0;
+        }
         roadReach.gather(x, y, RANGE);
         Compass right = lane.right();
         Compass ahead = lane;
@@ -65,19 +78,19 @@ final class Lidar {
             double r = Math.toRadians(centreBearing - ARC / 2 + ray * ANGULAR_STEP);
             double dx = Math.sin(r);
             double dy = Math.cos(r);
-            double reach = Math.min(RANGE, roadReach.along(x, y, dx, dy));
             double best = Double.NaN;
             boolean parked = false;
             for (int k = 0; k < n; k++) {
                 if (objects[k].rayInterval(x, y, dx, dy, interval)) {
-                    double d = Rays.firstSample(interval[0], interval[1], 0, RANGE_STEP, reach);
+                    double d = Rays.firstSample(interval[0], interval[1], 0, RANGE_STEP, RANGE);
                     if (!Double.isNaN(d) && (Double.isNaN(best) || d < best)) {
                         best = d;
                         parked = objectParked[k];
                     }
                 }
             }
-            if (!Double.isNaN(best)) {
+            // the ray stops where it leaves the road; only a ray that hit something needs to know where
+            if (!Double.isNaN(best) && roadReach.reaches(x, y, dx, dy, best)) {
                 double hx = best * dx;
                 double hy = best * dy;
                 hitU[hits] = hx * ahead.dx() + hy * ahead.dy();

@@ -93,17 +93,17 @@ final class MarkingCamera {
         double r = Math.toRadians(bearing);
         double dx = Math.sin(r);
         double dy = Math.cos(r);
-        double reach = Math.min(limit, roadReach.along(x, y, dx, dy));
         double best = Double.NaN;
         for (int s = 0; s < nStrips; s++) {
             if (strips[s].rayInterval(x, y, dx, dy, interval)) {
-                double d = Rays.firstSample(interval[0], interval[1], settings.rangeStart(), settings.rangeStep(), reach);
+                double d = Rays.firstSample(interval[0], interval[1], settings.rangeStart(), settings.rangeStep(), limit);
                 if (!Double.isNaN(d) && (Double.isNaN(best) || d < best)) {
                     best = d;
                 }
             }
         }
-        if (Double.isNaN(best)) {
+        // the ray stops where it leaves the road; only a ray that hit something needs to know where
+        if (Double.isNaN(best) || !roadReach.reaches(x, y, dx, dy, best)) {
             return Double.NaN;
         }
         return best * (dx * right.dx() + dy * right.dy());

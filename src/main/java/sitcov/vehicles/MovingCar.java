@@ -31,6 +31,8 @@ public final class MovingCar implements Vehicle, Steppable {
     static final double U_TURN_SPEED = 0.3;
     static final double LOOKAHEAD = 5;
     static final double GAP = 2;
+    /** Vehicles further than this (squared, metres) cannot matter to keeping distance this tick. */
+    private static final double FOLLOW_RANGE_SQ = 46 * 46;
     /** Ticks standing still after which the driver stops waiting for other standing moving cars. */
     static final int IMPATIENCE = 40;
     /**
@@ -249,6 +251,11 @@ public final class MovingCar implements Vehicle, Steppable {
         for (Vehicle other : scene.vehicles()) {
             if (other == this || !other.isActive()
                     || (impatient && other.speed() == 0 && other.id() != AutonomousCar.ID)) {
+                continue;
+            }
+            double ox = other.x() - body.x();
+            double oy = other.y() - body.y();
+            if (ox * ox + oy * oy > FOLLOW_RANGE_SQ) {
                 continue;
             }
             double delta = Math.toRadians(other.heading() - body.heading());

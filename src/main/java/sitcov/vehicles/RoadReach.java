@@ -33,6 +33,22 @@ final class RoadReach {
         }
     }
 
+    /**
+     * Whether the ray from the sensor at ({@code x}, {@code y}) along the unit vector reaches
+     * {@code distance} metres without leaving the road. Cheap when one road holds both ends (a
+     * road is convex), which is nearly always.
+     */
+    boolean reaches(double x, double y, double dx, double dy, double distance) {
+        double hx = x + dx * distance;
+        double hy = y + dy * distance;
+        for (int k = 0; k < n; k++) {
+            if (roads[k].contains(x, y) && roads[k].contains(hx, hy)) {
+                return true;
+            }
+        }
+        return along(x, y, dx, dy) + 1e-9 >= distance;
+    }
+
     /** The distance along the unit ray from the sensor that the gathered roads cover without a gap. */
     double along(double x, double y, double dx, double dy) {
         int m = 0;

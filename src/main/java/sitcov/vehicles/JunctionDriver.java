@@ -21,7 +21,7 @@ final class JunctionDriver {
     static final double STRAIGHT_SPEED = 1.5;
     static final double RIGHT_TURN_SPEED = 0.8;
     /** Ticks after which another vehicle's hold on a junction is taken to be stale. */
-    static final long PATIENCE = 80;
+    static final long PATIENCE = 30;
     static final double EXIT_BEYOND_SQUARE = 1.5;
     /** While crossing, a junction whose square begins within this distance is asked for already. */
     static final double LOOK_BEYOND = 12;

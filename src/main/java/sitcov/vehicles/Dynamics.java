@@ -14,6 +14,17 @@ public final class Dynamics {
     public static final long TIMEOUT_TICKS = 5000;
 
     private static final double FULL_SPEED_STOPPING_DISTANCE = stoppingDistance(MAX_SPEED);
+    /** Stopping distances of speeds 0, 1 mm, 2 mm … a tick, up to full speed: inverted by bisection. */
+    private static final double SPEED_STEP = 0.001;
+    private static final double[] STOPPING = tabulateStopping();
+
+    private static double[] tabulateStopping() {
+        double[] table = new double[(int) Math.round(MAX_SPEED / SPEED_STEP) + 1];
+        for (int i = 0; i < table.length; i++) {
+            table[i] = stoppingDistance(i * SPEED_STEP);
+        }
+        return table;
+    }
 
     private Dynamics() {
     }
@@ -36,14 +47,24 @@ public final class Dynamics {
      * of reaction, then full braking.
      */
     public static double speedToSlowTo(double target, double distance) {
-        if (distance <= 0) {
-            return target;
+        if (distance <= 0 || target >= MAX_SPEED) {
+            return Math.min(target, MAX_SPEED);
         }
-        double v = target;
-        while (v < MAX_SPEED && slowingDistance(v + 0.01, target) <= distance) {
-            v += 0.01;
+        if (slowingDistance(MAX_SPEED, target) <= distance) {
+            return MAX_SPEED;
         }
-        return v;
+        // slowing distance grows with the starting speed: bisect to a millimetre a tick
+        double lo = target;
+        double hi = MAX_SPEED;
+        while (hi - lo > 0.001) {
+            double mid = (lo + hi) / 2;
+            if (slowingDistance(mid, target) <= distance) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
     }
 
     private static double slowingDistance(double from, double target) {
@@ -62,13 +83,17 @@ public final class Dynamics {
         if (distance >= FULL_SPEED_STOPPING_DISTANCE) {
             return MAX_SPEED;
         }
-        // invert stoppingDistance approximately from below: v + v^2 / (2b) <= d
-        double b = BRAKING;
-        double v = -b + Math.sqrt(b * b + 2 * b * distance);
-        // the discrete sum is a little larger than the integral; back off until it fits
-        while (v > 0 && stoppingDistance(v) > distance) {
-            v -= 0.01;
+        // the stopping distance grows with speed: find the last tabulated speed that fits
+        int lo = 0;
+        int hi = STOPPING.length - 1;
+        while (lo < hi) {
+            int mid = (lo + hi + 1) >>> 1;
+            if (STOPPING[mid] <= distance) {
+                lo = mid;
+            } else {
+                hi = mid - 1;
+            }
         }
-        return Math.max(0, Math.min(MAX_SPEED, v));
+        return lo * SPEED_STEP;
     }
 }

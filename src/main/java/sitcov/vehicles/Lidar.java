@@ -1,5 +1,6 @@
 package sitcov.vehicles;
 
+import sitcov.geom.Bearing;
 import sitcov.geom.Box;
 import sitcov.geom.Compass;
 import sitcov.geom.Rays;
@@ -24,6 +25,8 @@ final class Lidar {
     private final Box[] objects = new Box[MAX_OBJECTS];
     private final boolean[] objectParked = new boolean[MAX_OBJECTS];
     private final double[] interval = new double[2];
+    private final int[] firstRay = new int[MAX_OBJECTS];
+    private final int[] lastRay = new int[MAX_OBJECTS];
     private final RoadReach roadReach;
 
     private final double[] hitU = new double[RAYS];
@@ -72,6 +75,9 @@ final class Lidar {
             return 0;
         }
         roadReach.gather(x, y, RANGE);
+        for (int k = 0; k < n; k++) {
+            raysCovering(k, x, y, centreBearing);
+        }
         Compass right = lane.right();
         Compass ahead = lane;
         for (int ray = 0; ray < RAYS; ray++) {
@@ -81,7 +87,7 @@ final class Lidar {
             double best = Double.NaN;
             boolean parked = false;
             for (int k = 0; k < n; k++) {
-                if (objects[k].rayInterval(x, y, dx, dy, interval)) {
+                if (ray >= firstRay[k] && ray <= lastRay[k] && objects[k].rayInterval(x, y, dx, dy, interval)) {
                     double d = Rays.firstSample(interval[0], interval[1], 0, RANGE_STEP, RANGE);
                     if (!Double.isNaN(d) && (Double.isNaN(best) || d < best)) {
                         best = d;
@@ -100,6 +106,29 @@ final class Lidar {
             }
         }
         return hits;
+    }
+
+    /**
+     * The rays that can meet object {@code k}: those between the bearings of its corners. Only
+     * saves work — a ray outside them cannot touch the box — so the sampled result is unchanged.
+     */
+    private void raysCovering(int k, double x, double y, double centreBearing) {
+        double[] c = objects[k].corners();
+        double lo = Double.MAX_VALUE;
+        double hi = -Double.MAX_VALUE;
+        for (int i = 0; i < 4; i++) {
+            double t = Bearing.turn(centreBearing, Bearing.between(x, y, c[2 * i], c[2 * i + 1]));
+            lo = Math.min(lo, t);
+            hi = Math.max(hi, t);
+        }
+        if (hi - lo >= 180 || objects[k].contains(x, y)) {
+            // the box wraps round the sensor (or holds it): every ray may meet it
+            firstRay[k] = 0;
+            lastRay[k] = RAYS - 1;
+            return;
+        }
+        firstRay[k] = Math.max(0, (int) Math.floor((lo + ARC / 2) / ANGULAR_STEP) - 1);
+        lastRay[k] = Math.min(RAYS - 1, (int) Math.ceil((hi + ARC / 2) / ANGULAR_STEP) + 1);
     }
 
     int hits() {

@@ -1,5 +1,6 @@
 package sitcov.vehicles;
 
+import sitcov.geom.Bearing;
 import sitcov.geom.Compass;
 import sitcov.geom.Rays;
 import sitcov.geom.Rect;
@@ -29,6 +30,8 @@ final class MarkingCamera {
     private final RoadNetwork network;
     private final Rect[] strips = new Rect[MAX_CANDIDATES];
     private final double[] interval = new double[2];
+    private final double[] stripLo = new double[MAX_CANDIDATES];
+    private final double[] stripHi = new double[MAX_CANDIDATES];
     private final double[] seen = new double[MAX_RAYS];
     private final RoadReach roadReach;
 
@@ -45,7 +48,7 @@ final class MarkingCamera {
         int n = nearbyStrips(x, y, lane, limit, MarkingKind.EDGE);
         int hits = 0;
         for (double i = settings.leftArc(); i >= -1e-9 && hits < MAX_RAYS; i -= settings.angularStep()) {
-            double v = lateralOfHit(x, y, lane.bearing() + i, right, n, settings, limit);
+            double v = lateralOfHit(x, y, lane.bearing(), i, right, n, settings, limit);
             if (!Double.isNaN(v) && v < 0 && v > -FARTHEST_LINE) {
                 seen[hits++] = v;
             }
@@ -54,7 +57,7 @@ final class MarkingCamera {
         n = nearbyStrips(x, y, lane, limit, MarkingKind.CENTRE);
         hits = 0;
         for (double i = 0; i >= -settings.rightArc() - 1e-9 && hits < MAX_RAYS; i -= settings.angularStep()) {
-            double v = lateralOfHit(x, y, lane.bearing() + i, right, n, settings, limit);
+            double v = lateralOfHit(x, y, lane.bearing(), i, right, n, settings, limit);
             if (!Double.isNaN(v) && v > 0 && v < FARTHEST_LINE) {
                 seen[hits++] = v;
             }
@@ -88,14 +91,15 @@ final class MarkingCamera {
     }
 
     /** The lateral offset (right positive) of the ray's first marking hit, or NaN. */
-    private double lateralOfHit(double x, double y, double bearing, Compass right, int nStrips,
+    private double lateralOfHit(double x, double y, double laneBearing, double offset, Compass right, int nStrips,
                                 CameraSettings settings, double limit) {
-        double r = Math.toRadians(bearing);
+        double r = Math.toRadians(laneBearing + offset);
         double dx = Math.sin(r);
         double dy = Math.cos(r);
         double best = Double.NaN;
         for (int s = 0; s < nStrips; s++) {
-            if (strips[s].rayInterval(x, y, dx, dy, interval)) {
+            // a ray outside the bearings of a strip's corners cannot meet it (this only saves work)
+            if (offset >= stripLo[s] && offset <= stripHi[s] && strips[s].rayInterval(x, y, dx, dy, interval)) {
                 double d = Rays.firstSample(interval[0], interval[1], settings.rangeStart(), settings.rangeStep(), limit);
                 if (!Double.isNaN(d) && (Double.isNaN(best) || d < best)) {
                     best = d;
@@ -120,10 +124,35 @@ final class MarkingCamera {
             // the camera follows lines that run along the lane; across-lines belong to other roads
             boolean alongLane = northSouth ? strip.height() > strip.width() : strip.width() > strip.height();
             if (marking.kind() == kind && alongLane && n < MAX_CANDIDATES && near(strip, x, y, limit)) {
+                bearingsOf(n, strip, x, y, lane.bearing());
                 strips[n++] = strip;
             }
         }
         return n;
+    }
+
+    /** The span of ray offsets (degrees left of the lane direction) that can meet strip {@code k}. */
+    private void bearingsOf(int k, Rect strip, double x, double y, double laneBearing) {
+        if (strip.contains(x, y)) {
+            stripLo[k] = -360;
+            stripHi[k] = 360;
+            return;
+        }
+        double lo = Double.MAX_VALUE;
+        double hi = -Double.MAX_VALUE;
+        for (int corner = 0; corner < 4; corner++) {
+            double cx = (corner & 1) == 0 ? strip.minX() : strip.maxX();
+            double cy = (corner & 2) == 0 ? strip.minY() : strip.maxY();
+            double t = Bearing.turn(laneBearing, Bearing.between(x, y, cx, cy));
+            lo = Math.min(lo, t);
+            hi = Math.max(hi, t);
+        }
+        if (hi - lo >= 180) {
+            lo = -360;
+            hi = 360;
+        }
+        stripLo[k] = lo - 1e-6;
+        stripHi[k] = hi + 1e-6;
     }
 
     private static boolean near(Rect r, double x, double y, double limit) {

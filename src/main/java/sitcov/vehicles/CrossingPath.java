@@ -157,7 +157,9 @@ final class CrossingPath {
             if (i > progress && onTheSpot[i]) {
                 break; // never skip a turn on the spot
             }
-            double d = Math.hypot(xs[i] - x, ys[i] - y);
+            double ex = xs[i] - x;
+            double ey = ys[i] - y;
+            double d = ex * ex + ey * ey; // squared: only compared
             if (d < best) {
                 best = d;
                 nearest = i;

@@ -280,7 +280,12 @@ public final class MovingCar implements Vehicle, Steppable {
 
     private boolean hasLeftTheRoads() {
         Box body = footprint();
-        return scene.network().surfaces().stream().noneMatch(body::overlaps);
+        for (var surface : scene.network().surfaces()) {
+            if (body.overlaps(surface)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Enters again at a random dead end, if its square is free. */

@@ -16,7 +16,9 @@ final class RoadReach {
     private final double[] interval = new double[2];
     private final double[] start = new double[MAX_ROADS];
     private final double[] end = new double[MAX_ROADS];
+    private final Rect[] holding = new Rect[MAX_ROADS];
     private int n;
+    private int nHolding;
 
     RoadReach(RoadNetwork network) {
         this.network = network;
@@ -25,10 +27,14 @@ final class RoadReach {
     /** Keeps the road surfaces within {@code radius} of the sensor for the rays that follow. */
     void gather(double x, double y, double radius) {
         n = 0;
+        nHolding = 0;
         for (Rect surface : network.surfaces()) {
             if (n < MAX_ROADS && surface.minX() <= x + radius && surface.maxX() >= x - radius
                     && surface.minY() <= y + radius && surface.maxY() >= y - radius) {
                 roads[n++] = surface;
+                if (surface.contains(x, y)) {
+                    holding[nHolding++] = surface;
+                }
             }
         }
     }
@@ -41,8 +47,8 @@ final class RoadReach {
     boolean reaches(double x, double y, double dx, double dy, double distance) {
         double hx = x + dx * distance;
         double hy = y + dy * distance;
-        for (int k = 0; k < n; k++) {
-            if (roads[k].contains(x, y) && roads[k].contains(hx, hy)) {
+        for (int k = 0; k < nHolding; k++) {
+            if (holding[k].contains(hx, hy)) {
                 return true;
             }
         }

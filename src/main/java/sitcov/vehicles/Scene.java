@@ -114,8 +114,13 @@ public final class Scene {
 
     /** Whether any active vehicle other than {@code self} has part of its footprint in the junction's square. */
     boolean isOccupiedByOther(Junction junction, Vehicle self) {
+        double jx = junction.centre().x();
+        double jy = junction.centre().y();
         for (Vehicle v : vehicles) {
-            if (v != self && v.isActive() && v.footprint().overlaps(junction.square())) {
+            // a vehicle whose front is further than its length plus the square's half-diagonal cannot reach in
+            double reach = v.length() + 4.3;
+            if (v != self && v.isActive() && Math.abs(v.x() - jx) < reach && Math.abs(v.y() - jy) < reach
+                    && v.footprint().overlaps(junction.square())) {
                 return true;
             }
         }

@@ -58,7 +58,7 @@ final class TrafficSensor {
             double v = cx * rx + cy * ry;
             double extentU = c * halfL + s * halfW;
             double extentV = s * halfL + c * halfW;
-            double distance = Math.hypot(cx, cy);
+            double distance = Math.sqrt(cx * cx + cy * cy);
             if (distance > RANGE + extentU || !inField(cx, cy, heading, distance)) {
                 continue;
             }

@@ -36,7 +36,7 @@ public final class Main {
     }
 
     public static void main(String[] args) {
-        int code = standard().run(args, System.out, System.err);
+        int code = run(args, System.out, System.err);
         System.out.flush();
         System.err.flush();
         if (code != ExitCode.OK) {

@@ -35,7 +35,6 @@ final class JunctionDriver {
     private int held = -1;
     private int reserved = -1;
     private Compass reservedExit;
-    private int crossingJunction = -1;
     private Compass arrival;
     private Compass exit;
     private int waypoint;

@@ -53,7 +53,7 @@ final class MarkingCamera {
                 seen[hits++] = v;
             }
         }
-        double edge = nearestLine(hits, -1);
+        double edge = nearestLine(hits);
         n = nearbyStrips(x, y, lane, limit, MarkingKind.CENTRE);
         hits = 0;
         for (double i = 0; i >= -settings.rightArc() - 1e-9 && hits < MAX_RAYS; i -= settings.angularStep()) {
@@ -62,7 +62,7 @@ final class MarkingCamera {
                 seen[hits++] = v;
             }
         }
-        double centre = nearestLine(hits, 1);
+        double centre = nearestLine(hits);
         if (Double.isNaN(edge) && Double.isNaN(centre)) {
             return LaneEstimate.NOTHING_SEEN;
         }
@@ -70,8 +70,8 @@ final class MarkingCamera {
                 !Double.isNaN(centre), Double.isNaN(centre) ? 0 : centre);
     }
 
-    /** The mean lateral offset of the hits on the line nearest the car on one side ({@code side} −1 left, +1 right); NaN if none. */
-    private double nearestLine(int hits, int side) {
+    /** The mean lateral offset of the hits on the line nearest the car (one side's hits are in {@code seen}); NaN if none. */
+    private double nearestLine(int hits) {
         if (hits == 0) {
             return Double.NaN;
         }

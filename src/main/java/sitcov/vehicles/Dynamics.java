@@ -35,11 +35,12 @@ public final class Dynamics {
      * ticks of full braking: v + Σ (v − k·0.15625) over k = 0, 1, … while the term is positive.
      */
     public static double stoppingDistance(double speed) {
-        double d = speed;
-        for (double v = speed; v > 0; v -= BRAKING) {
-            d += v;
+        if (speed <= 0) {
+            return 0;
         }
-        return d;
+        // n positive terms v, v − b, …, v − (n−1)·b: their sum in closed form
+        long n = (long) Math.ceil(speed / BRAKING - 1e-12);
+        return speed + n * speed - BRAKING * n * (n - 1) / 2.0;
     }
 
     /**

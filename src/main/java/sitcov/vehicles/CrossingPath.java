@@ -28,6 +28,8 @@ final class CrossingPath {
     static final double TAIL = 4.0;
     static final double LEFT_TURN_RADIUS = 1.5;
     static final double RIGHT_TURN_RADIUS = 4.5;
+    /** The tightest arc planned for a late turn. */
+    static final double MIN_RADIUS = 1.0;
     /**
      * Where a U-turn turns on the spot, past the square's middle: turning sweeps 1.8 m round the
      * rear axle, and the square's far side may be a closed road end 3 m beyond its middle.
@@ -94,14 +96,12 @@ final class CrossingPath {
             double cy = arrival.isNorthSouth() ? wy : y0;
             boolean left = exit == arrival.left();
             double r = left ? LEFT_TURN_RADIUS : RIGHT_TURN_RADIUS;
+            // a car that entered late (the square right after another) has less room before the
+            // lanes cross: it turns tighter, so it still ends on the exit lane's centre line
+            double room = (cx - (x0 - arrival.dx() * axle)) * arrival.dx() + (cy - (y0 - arrival.dy() * axle)) * arrival.dy();
+            r = Math.max(MIN_RADIUS, Math.min(r, room));
             double sx = cx - arrival.dx() * r;
             double sy = cy - arrival.dy() * r;
-            // a car that has already rolled past where the arc begins starts it where it is
-            double overshoot = ((x0 - arrival.dx() * axle) - sx) * arrival.dx() + ((y0 - arrival.dy() * axle) - sy) * arrival.dy();
-            if (overshoot > 0) {
-                sx += arrival.dx() * overshoot;
-                sy += arrival.dy() * overshoot;
-            }
             path.straightTo(sx, sy);
             path.arc(sx + exit.dx() * r, sy + exit.dy() * r, r, left ? Math.PI / 2 : -Math.PI / 2);
             path.straightTo(endX, endY);

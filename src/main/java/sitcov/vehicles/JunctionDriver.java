@@ -20,6 +20,11 @@ final class JunctionDriver {
     static final double APPROACH_SPEED = 2.0;
     static final double STRAIGHT_SPEED = 1.5;
     static final double RIGHT_TURN_SPEED = 0.8;
+    /** The fastest the car follows the left-turn arc (radius 1.5 m) at 15° a tick. */
+    static final double LEFT_TURN_SPEED = 0.38;
+    /** The straight legs of a U-turn, either side of turning on the spot. */
+    static final double U_TURN_SPEED = 0.5;
+    static final double CRAWL_BEFORE_TURNING = 1.0;
     /** Ticks after which another vehicle's hold on a junction is taken to be stale. */
     static final long PATIENCE = 30;
     static final double EXIT_BEYOND_SQUARE = 1.5;
@@ -212,14 +217,15 @@ final class JunctionDriver {
         }
         path.turned(car.heading());
         intent.steer(path.bearing(car.x(), car.y(), car.heading(), car.speed()), "junction");
-        double speed = entrySpeed(arrival, exit);
-        intent.limit(speed, "junction");
+        intent.limit(entrySpeed(arrival, exit), "junction");
         if (path.isTurningOnTheSpot()) {
             intent.limit(0, "junction");
-        } else {
-            intent.stopWithin(path.distanceToTurnOnTheSpot(car.x(), car.y(), car.heading()), "junction");
+            return;
         }
-        if (speed <= Dynamics.CRAWL_CEILING) {
+        double toTurn = path.distanceToTurnOnTheSpot(car.x(), car.y(), car.heading());
+        intent.stopWithin(toTurn, "junction");
+        if (toTurn < CRAWL_BEFORE_TURNING) {
+            // the last stretch before turning on the spot is crawled (faults 5 and 6 act here)
             intent.crawl();
         }
     }
@@ -232,7 +238,7 @@ final class JunctionDriver {
         if (exit == lane.right()) {
             return RIGHT_TURN_SPEED;
         }
-        return Dynamics.CRAWL_CEILING;
+        return exit == lane.left() ? LEFT_TURN_SPEED : U_TURN_SPEED;
     }
 
     private Compass chooseExit(Junction junction) {

@@ -59,7 +59,7 @@ class JunctionTurnsTest {
         CrossingPath path = CrossingPath.between(x0, y0, arrival, wp.x(), wp.y(), exit, j.centre().x(), j.centre().y(), axle);
         Body body = new Body(x0, y0, arrival.bearing(), axle);
         double speed = exit == arrival ? JunctionDriver.STRAIGHT_SPEED
-                : exit == arrival.right() ? JunctionDriver.RIGHT_TURN_SPEED : Dynamics.CRAWL_CEILING;
+                : exit == arrival.right() ? JunctionDriver.RIGHT_TURN_SPEED : exit == arrival.left() ? JunctionDriver.LEFT_TURN_SPEED : JunctionDriver.U_TURN_SPEED;
         for (int tick = 0; tick < 200; tick++) {
             path.turned(body.heading());
             double bearing = path.bearing(body.x(), body.y(), body.heading(), body.speed());

@@ -36,10 +36,10 @@ public final class MovingCar implements Vehicle, Steppable {
     /** Ticks standing still after which the driver stops waiting for other standing moving cars. */
     static final int IMPATIENCE = 40;
     /**
-     * Ticks standing still (20 s) after which the driver gives up and leaves the map, to be
+     * Ticks standing still (10 s) after which the driver gives up and leaves the map, to be
      * replaced at a dead end: traffic never locks up for good, around the autonomous car or not.
      */
-    static final int GIVE_UP = 100;
+    static final int GIVE_UP = 50;
     /** Its rear axle, which it turns about, is this far behind its front. */
     static final double REAR_AXLE = 3.5;
 

@@ -130,6 +130,15 @@ final class JunctionDriver {
             exit = reservedExit;
             reserved = -1;
         }
+        if ((next.id() == held || next.id() == reserved) && !crossing
+                && !car.scene().occupancy().isHeldBy(next.id(), car.id())) {
+            // its hold went stale and another vehicle took the junction over: ask again
+            if (next.id() == held) {
+                held = -1;
+            } else {
+                reserved = -1;
+            }
+        }
         if (next.id() == held || next.id() == reserved) {
             if (d <= 0 && !crossing) {
                 startCrossing(next, lane);

@@ -123,13 +123,16 @@ public final class MovingCar implements Vehicle, Steppable {
             return Dynamics.MAX_SPEED;
         }
         double d = Lanes.distanceToSquare(next, lane, body.x(), body.y());
-        double limit = APPROACH_SPEED + Math.sqrt(2 * Dynamics.BRAKING * Math.max(0, d - 5));
+        double limit = Dynamics.speedToSlowTo(APPROACH_SPEED, d);
+        if (held == next.id() && !scene.occupancy().isHeldBy(held, id)) {
+            held = -1; // its hold went stale and another vehicle took the junction over: ask again
+        }
         if (held == next.id()) {
             if (d <= 0) {
                 startCrossing(next);
                 return JUNCTION_SPEED;
             }
-            return Math.min(limit, JUNCTION_SPEED + Math.sqrt(2 * Dynamics.BRAKING * d));
+            return Math.min(limit, Dynamics.speedToSlowTo(JUNCTION_SPEED, d));
         }
         if (d > Dynamics.stoppingDistance(body.speed()) + 2) {
             return limit;
@@ -139,7 +142,7 @@ public final class MovingCar implements Vehicle, Steppable {
                 scene.occupancy().release(held, id);
             }
             held = next.id();
-            return Math.min(limit, JUNCTION_SPEED + Math.sqrt(2 * Dynamics.BRAKING * Math.max(0, d)));
+            return Math.min(limit, Dynamics.speedToSlowTo(JUNCTION_SPEED, d));
         }
         return Dynamics.speedToStopWithin(d - 0.5);
     }

@@ -28,6 +28,9 @@ final class JunctionDriver {
     /** Ticks after which another vehicle's hold on a junction is taken to be stale. */
     static final long PATIENCE = 30;
     static final double EXIT_BEYOND_SQUARE = 1.5;
+    /** Room the car wants in its exit lane beyond the square before it enters, and what counts as blocking it. */
+    static final double EXIT_ROOM = 6;
+    static final double EXIT_BLOCKED_SPEED = 0.5;
     /** While crossing, a junction whose square begins within this distance is asked for already. */
     static final double LOOK_BEYOND = 12;
     /** A crossing that has taken the car this far from the junction's centre has gone wrong: give it up. */
@@ -140,6 +143,13 @@ final class JunctionDriver {
             }
         }
         if (next.id() == held || next.id() == reserved) {
+            Compass leaving = next.id() == held ? exit : reservedExit;
+            if (!exitIsClear(next, leaving)) {
+                // do not enter a junction without room to leave it: wait short of the square
+                waiting = true;
+                intent.stopWithin(d - 0.5, "junction");
+                return;
+            }
             if (d <= 0 && !crossing) {
                 startCrossing(next, lane);
                 cross(intent);
@@ -180,6 +190,28 @@ final class JunctionDriver {
         } else {
             intent.stopWithin(d - 0.5, "junction");
         }
+    }
+
+    /** Whether the exit lane just beyond the square is free of other vehicles (the radar sees it). */
+    private boolean exitIsClear(Junction junction, Compass leaving) {
+        if (!junction.hasArm(leaving)) {
+            return true;
+        }
+        double half = sitcov.world.Dimensions.HALF_ROAD;
+        var a = junction.exitPoint(leaving, 0);
+        var b = junction.exitPoint(leaving, EXIT_ROOM);
+        Compass side = leaving.left();
+        double w = sitcov.world.Dimensions.LANE_WIDTH / 2;
+        sitcov.geom.Rect lane = sitcov.geom.Rect.spanning(a.x() - side.dx() * w, a.y() - side.dy() * w,
+                b.x() + side.dx() * w, b.y() + side.dy() * w);
+        for (Vehicle v : car.scene().vehicles()) {
+            if (v != car && v.isActive() && Math.abs(v.x() - junction.centre().x()) < half + EXIT_ROOM + 6
+                    && Math.abs(v.y() - junction.centre().y()) < half + EXIT_ROOM + 6 && v.footprint().overlaps(lane)
+                    && v.speed() < EXIT_BLOCKED_SPEED) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Fault 7: only the first half of the junctions (in map order) is recognised. */

@@ -166,7 +166,9 @@ final class CrossingPath {
             }
         }
         progress = nearest;
-        double h = headings[nearest];
+        // the heading planned a point ahead: on an arc, the nearest point's heading already lags
+        int ahead = Math.min(nearest + 1, headings.length - 1);
+        double h = onTheSpot[ahead] ? headings[nearest] : headings[ahead];
         double hx = Math.sin(Math.toRadians(h));
         double hy = Math.cos(Math.toRadians(h));
         // how far the car is to the left of the path (left of a driver facing h is (cos h, -sin h))

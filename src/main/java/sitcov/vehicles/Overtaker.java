@@ -192,7 +192,8 @@ final class Overtaker {
         }
         double ticks = ticksToTravel(finish);
         boolean clearOfOncoming = traffic.oncomingGap() - speed * ticks > finish + SAFETY_MARGIN;
-        return clearOfOncoming && !traffic.otherLaneOccupied();
+        // anything in the other lane where the pass will be (a car standing there, one alongside)
+        return clearOfOncoming && traffic.otherLaneGap() > finish + SAFETY_MARGIN;
     }
 
     /** Ticks to travel {@code distance} from the current speed, accelerating up to the passing speed. */

@@ -22,7 +22,7 @@ final class TrafficSensor {
     private double pathSpeed;
     private double oncomingGap;
     private double oncomingSpeed;
-    private boolean otherLaneOccupied;
+    private double otherLaneGap;
 
     /**
      * Scans from the car at ({@code x}, {@code y}) heading {@code heading}, with the lane
@@ -35,7 +35,7 @@ final class TrafficSensor {
         pathSpeed = 0;
         oncomingGap = Double.POSITIVE_INFINITY;
         oncomingSpeed = 0;
-        otherLaneOccupied = false;
+        otherLaneGap = Double.POSITIVE_INFINITY;
         double fx = lane.dx();
         double fy = lane.dy();
         double rx = lane.right().dx();
@@ -77,7 +77,7 @@ final class TrafficSensor {
             boolean inOtherLane = v + extentV > laneCentre + 1.6 && v - extentV < laneCentre + 4.4;
             if (inOtherLane) {
                 if (u + extentU > fromU && gap < toU) {
-                    otherLaneOccupied = true;
+                    otherLaneGap = Math.min(otherLaneGap, Math.max(0, gap));
                 }
                 if (along < 0.05 && gap > -2 && gap < oncomingGap) {
                     oncomingGap = Math.max(0, gap);
@@ -117,7 +117,8 @@ final class TrafficSensor {
         return oncomingSpeed;
     }
 
-    boolean otherLaneOccupied() {
-        return otherLaneOccupied;
+    /** Distance to the nearest vehicle of any direction in the other lane, from just behind the car on (infinite if none). */
+    double otherLaneGap() {
+        return otherLaneGap;
     }
 }

@@ -20,6 +20,9 @@ final class Overtaker {
     static final double WAIT_GAP = 6;
     /** Half the width the car sweeps, with a margin: a parked car inside it is in the car's way. */
     static final double CORRIDOR = 1.15;
+    /** Blocked this close while out in the other lane, the car pulls back in, aiming this far ahead. */
+    static final double PULL_IN_EARLY = 8;
+    static final double PULL_IN_AHEAD = 4;
     static final double PASSING_SPEED = 1.5;
     static final double TIGHT_SPEED = 0.6;
     static final double PARKED_CAR_LENGTH = 5;
@@ -91,6 +94,11 @@ final class Overtaker {
         double blocked = parkedCarInTheWay();
         if (!Double.isNaN(blocked)) {
             intent.stopWithin(blocked - 0.7, "overtaking");
+            if (stage == OvertakingStage.PULLED_OUT && blocked < PULL_IN_EARLY && ownLaneFreeBeside(laneCentre)) {
+                // something stands in the other lane ahead: back into its own lane now, while there is room
+                replace(PULL_IN_AHEAD, laneCentre, Waypoint.Kind.OVERTAKE_FINISH);
+                stage = OvertakingStage.FINISH;
+            }
         }
         double ahead = LaneFrame.u(lane, car.x(), car.y(), wp.x(), wp.y());
         double aside = LaneFrame.v(lane, car.x(), car.y(), wp.x(), wp.y());
@@ -208,6 +216,18 @@ final class Overtaker {
             ticks++;
         }
         return ticks;
+    }
+
+    /** Whether no parked car stands in the car's own lane from just behind it to a few metres ahead. */
+    private boolean ownLaneFreeBeside(double laneCentre) {
+        Lidar lidar = car.lidar();
+        for (int h = 0; h < lidar.hits(); h++) {
+            if (lidar.isParkedCar(h) && lidar.u(h) > -AutonomousCar.REAR_AXLE - 1 && lidar.u(h) < PULL_IN_AHEAD + 1
+                    && Math.abs(lidar.v(h) - laneCentre) < 1.5) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Distance to the nearest parked car inside the width the car sweeps ahead of it, or NaN. */

@@ -234,10 +234,16 @@ final class Overtaker {
     private double parkedCarInTheWay() {
         Lidar lidar = car.lidar();
         int hits = lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.scene(), car);
+        // the width the car sweeps lies along its heading, which pulling out turns away from the lane
+        double phi = Math.toRadians(Bearing.turn(lane.bearing(), car.heading()));
+        double cos = Math.cos(phi);
+        double sin = Math.sin(phi);
         double nearest = Double.NaN;
         for (int h = 0; h < hits; h++) {
-            if (lidar.isParkedCar(h) && lidar.u(h) > 0 && Math.abs(lidar.v(h)) < CORRIDOR) {
-                nearest = Double.isNaN(nearest) ? lidar.u(h) : Math.min(nearest, lidar.u(h));
+            double along = lidar.u(h) * cos - lidar.v(h) * sin;
+            double across = lidar.u(h) * sin + lidar.v(h) * cos;
+            if (lidar.isParkedCar(h) && along > 0 && Math.abs(across) < CORRIDOR) {
+                nearest = Double.isNaN(nearest) ? along : Math.min(nearest, along);
             }
         }
         return nearest;

@@ -64,8 +64,12 @@ public final class Invariants {
                 v.add("the Target " + p + " is inside a parked car");
             }
         });
-        layout.carStart().ifPresent(s ->
-                checkStart(v, "the autonomous car", s, AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH, layout, network));
+        layout.carStart().ifPresent(s -> {
+            checkStart(v, "the autonomous car", s, AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH, layout, network);
+            if (!Placement.hasRoomAhead(s, layout.parkedCars())) {
+                v.add("the autonomous car starts within " + Placement.ROOM_AHEAD + " m behind a parked car: " + s);
+            }
+        });
         return v;
     }
 

@@ -33,6 +33,8 @@ final class Placement {
     static final double TARGET_CLEARANCE = 1.0;
     static final double MIN_START_TO_TARGET = 3.0;
     static final double MOVING_CAR_MIN_DISTANCE = 5.0;
+    /** The car starts at least this far behind a parked car in its lane, room to pull out round it. */
+    static final double ROOM_AHEAD = 8.0;
 
     private final RoadNetwork network;
 
@@ -103,7 +105,7 @@ final class Placement {
         for (int t = 0; t < START_TRIES; t++) {
             Optional<StartPose> pose = laneStart(random, parked, AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH);
             if (pose.isPresent() && target.map(g -> g.position().distanceTo(pose.get().position()) >= MIN_START_TO_TARGET)
-                    .orElse(true)) {
+                    .orElse(true) && hasRoomAhead(pose.get(), parked)) {
                 return pose;
             }
         }
@@ -141,6 +143,13 @@ final class Placement {
             }
         }
         return new Placed<>(placed, count);
+    }
+
+    /** Whether no parked car stands in the car's lane just ahead of its start, where it could not pull out round it. */
+    static boolean hasRoomAhead(StartPose pose, List<ParkedCar> parked) {
+        var ahead = pose.position().moved(pose.heading().bearing(), ROOM_AHEAD);
+        Box room = Box.behind(ahead.x(), ahead.y(), pose.heading().bearing(), ROOM_AHEAD, AUTONOMOUS_CAR_WIDTH);
+        return parked.stream().noneMatch(p -> p.footprint().overlaps(room));
     }
 
     /** A lane start near a uniform point whose footprint is on the road, outside junctions and parked cars. */

@@ -277,7 +277,7 @@ final class Overtaker {
             if (u > 0 && v > laneCentre - 1.4 && v < laneCentre + 1.4) {
                 nearest = Double.isNaN(nearest) ? u : Math.min(nearest, u);
                 farthest = Double.isNaN(farthest) ? u : Math.max(farthest, u);
-            } else if (u > -2 && v > laneCentre + 1.6 && v < laneCentre + 4.4) {
+            } else if (u > 0 && v > laneCentre + 1.6 && v < laneCentre + 4.4) {
                 opposite = Double.isNaN(opposite) ? u : Math.min(opposite, u);
             }
         }

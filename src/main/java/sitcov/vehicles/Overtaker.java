@@ -20,6 +20,10 @@ final class Overtaker {
     static final double WAIT_GAP = 6;
     /** Half the width the car sweeps, with a margin: a parked car inside it is in the car's way. */
     static final double CORRIDOR = 1.15;
+    /** A car parked on the other side less than this far behind the car's front still stands beside it. */
+    static final double BESIDE = 2.5;
+    /** How close to the parked car ahead the car may creep to get past one parked beside it. */
+    static final double CREEP_GAP = 2.5;
     /** Blocked this close while out in the other lane, the car pulls back in, aiming this far ahead. */
     static final double PULL_IN_EARLY = 8;
     static final double PULL_IN_AHEAD = 4;
@@ -53,6 +57,11 @@ final class Overtaker {
         Sighting s = look(laneCentre, false);
         if (Double.isNaN(s.nearest) || s.nearest > Lidar.RANGE) {
             stage = OvertakingStage.NOT_OVERTAKING;
+            return;
+        }
+        if (s.oppositeBeside) {
+            // a car parked on the other side right beside it: creep on past it before pulling out
+            intent.stopWithin(s.nearest - CREEP_GAP, "overtaking");
             return;
         }
         intent.stopWithin(s.nearest - WAIT_GAP, "overtaking");
@@ -250,7 +259,7 @@ final class Overtaker {
     }
 
     /** What the LIDAR shows of parked cars, in the lane frame. */
-    private record Sighting(double nearest, double farthest, double opposite) {
+    private record Sighting(double nearest, double farthest, double opposite, boolean oppositeBeside) {
     }
 
     private Sighting look(double laneCentre, boolean passing) {
@@ -268,6 +277,7 @@ final class Overtaker {
         double nearest = Double.NaN;
         double farthest = Double.NaN;
         double opposite = Double.NaN;
+        boolean beside = false;
         for (int h = 0; h < hits; h++) {
             if (!lidar.isParkedCar(h)) {
                 continue;
@@ -277,10 +287,14 @@ final class Overtaker {
             if (u > 0 && v > laneCentre - 1.4 && v < laneCentre + 1.4) {
                 nearest = Double.isNaN(nearest) ? u : Math.min(nearest, u);
                 farthest = Double.isNaN(farthest) ? u : Math.max(farthest, u);
-            } else if (u > 0 && v > laneCentre + 1.6 && v < laneCentre + 4.4) {
-                opposite = Double.isNaN(opposite) ? u : Math.min(opposite, u);
+            } else if (u > -BESIDE && v > laneCentre + 1.6 && v < laneCentre + 4.4) {
+                if (u > 1) {
+                    opposite = Double.isNaN(opposite) ? u : Math.min(opposite, u);
+                } else {
+                    beside = true;
+                }
             }
         }
-        return new Sighting(nearest, farthest, opposite);
+        return new Sighting(nearest, farthest, opposite, beside);
     }
 }

@@ -144,7 +144,7 @@ final class JunctionDriver {
         }
         if (next.id() == held || next.id() == reserved) {
             Compass leaving = next.id() == held ? exit : reservedExit;
-            if (!exitIsClear(next, leaving)) {
+            if (d > 0 && !exitIsClear(next, leaving)) {
                 // do not enter a junction without room to leave it: wait short of the square
                 waiting = true;
                 intent.stopWithin(d - 0.5, "junction");

@@ -59,6 +59,14 @@ final class Overtaker {
             stage = OvertakingStage.NOT_OVERTAKING;
             return;
         }
+        var target = car.scene().target().position();
+        double targetU = LaneFrame.u(lane, car.x(), car.y(), target.x(), target.y());
+        double targetV = LaneFrame.v(lane, car.x(), car.y(), target.x(), target.y());
+        if (targetU > -1 && targetU < s.nearest && Math.abs(targetV - laneCentre) < 1.6) {
+            // the Target comes before the parked car: reach it, do not pull out round the car
+            stage = OvertakingStage.NOT_OVERTAKING;
+            return;
+        }
         if (s.oppositeBeside) {
             // a car parked on the other side right beside it: creep on past it before pulling out
             intent.stopWithin(s.nearest - CREEP_GAP, "overtaking");

@@ -41,6 +41,8 @@ public final class AutonomousCar implements Vehicle, Steppable {
     private final Intent intent = new Intent();
     private Compass lane;
     private LaneEstimate estimate = LaneEstimate.NOTHING_SEEN;
+    private final LaneMemory laneMemory = new LaneMemory();
+    private double laneCentre;
     private boolean reachedTarget;
 
     AutonomousCar(Scene scene, StartPose start, FaultSwitchboard faults, RandomGenerator decisions) {
@@ -65,11 +67,12 @@ public final class AutonomousCar implements Vehicle, Steppable {
         intent.reset();
         followHeadingIntoLane();
         estimate = lookForMarkings();
-        traffic.scan(scene, this, body.x(), body.y(), body.heading(), lane, estimate.laneCentre(), -5, 40);
+        laneCentre = laneMemory.laneCentre(lane, body.x(), body.y(), estimate);
+        traffic.scan(scene, this, body.x(), body.y(), body.heading(), lane, laneCentre, -5, 40);
         junctions.releaseIfLeft();
         junctions.plan(intent, lane);
         if (!junctions.isCrossing()) {
-            overtaker.plan(intent, lane, estimate.laneCentre());
+            overtaker.plan(intent, lane, laneCentre);
         }
         keepDistance();
         targetSeeker.plan(intent, lane, estimate);
@@ -199,7 +202,7 @@ public final class AutonomousCar implements Vehicle, Steppable {
 
     /** Where it believes its lane centre is, metres to its right. */
     public double believedLaneCentre() {
-        return estimate.laneCentre();
+        return laneCentre;
     }
 
     /** Which behaviour set the speed limit in the last tick (null when none did). */

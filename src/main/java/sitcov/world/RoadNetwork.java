@@ -115,6 +115,11 @@ public final class RoadNetwork {
     /** Whether every part of the footprint is on the road surface. */
     public boolean isOnRoad(Box footprint) {
         Rect bounds = footprint.bounds();
+        for (Rect surface : surfaces) {
+            if (surface.contains(bounds)) {
+                return true; // the usual case, decided without any segment test
+            }
+        }
         List<Rect> near = new ArrayList<>(4);
         for (Rect surface : surfaces) {
             if (surface.touches(bounds)) {

@@ -210,15 +210,7 @@ public final class AutonomousCar implements Vehicle, Steppable {
         return intent.limitedBy();
     }
 
-    /** The bearing it steered towards in the last tick. */
-    public double steeringBearing() {
-        return intent.bearing();
-    }
 
-    /** The junction manoeuvre under way, in words (empty when none). */
-    public String junctionManoeuvre() {
-        return junctions.describe();
-    }
 
     /** Which behaviour steered in the last tick. */
     public String steeredBy() {

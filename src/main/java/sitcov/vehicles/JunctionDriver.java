@@ -67,13 +67,6 @@ final class JunctionDriver {
         return waiting;
     }
 
-    /** The junction manoeuvre under way, in words, for traces: e.g. "junction 5: WEST to EAST". */
-    String describe() {
-        if (crossing) {
-            return "junction " + held + ": " + arrival + " to " + exit;
-        }
-        return waiting ? "waiting" : held >= 0 ? "holding junction " + held : "";
-    }
 
     /** Lets go of the junction once the car's whole footprint has left its square. */
     void releaseIfLeft() {

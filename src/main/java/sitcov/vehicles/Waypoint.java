@@ -9,8 +9,4 @@ public record Waypoint(int id, double x, double y, Kind kind) {
         OVERTAKE_PULLED_OUT,
         OVERTAKE_FINISH
     }
-
-    public double distanceTo(double px, double py) {
-        return Math.hypot(px - x, py - y);
-    }
 }

@@ -54,7 +54,8 @@ public final class AutonomousCar implements Vehicle, Steppable {
         this.camera = new MarkingCamera(scene.network());
         this.lidar = new Lidar(scene.network());
         this.waypoints = new Waypoints(faults);
-        this.junctions = new JunctionDriver(this, faults, decisions, scene.network().junctions().size());
+        this.junctions = new JunctionDriver(this, faults, decisions,
+                Route.plan(scene.network(), scene.target()), scene.network().junctions().size());
         this.overtaker = new Overtaker(this, faults);
         this.targetSeeker = new TargetSeeker(this, faults);
     }

@@ -12,7 +12,8 @@ import sitcov.world.Road;
 /**
  * The autonomous car at junctions (reference §3.4): slows on the approach, asks for the junction
  * before entering and waits at the square's edge while another vehicle holds it, then crosses
- * towards the exit it chose — exits not yet taken first, then the one nearest the Target, and when
+ * towards the exit it chose — exits not yet taken first, then the one nearest the Target along the
+ * roads ({@link Route}), and when
  * every exit was taken, each competes with probability 0.8^(times taken). Dead ends are left by a
  * U-turn through the square.
  */
@@ -39,6 +40,7 @@ final class JunctionDriver {
     private final AutonomousCar car;
     private final FaultSwitchboard faults;
     private final RandomGenerator decisions;
+    private final Route route;
     private final int[][] exitsTaken;
     private int held = -1;
     private int reserved = -1;
@@ -52,10 +54,11 @@ final class JunctionDriver {
     private boolean crossing;
     private boolean waiting;
 
-    JunctionDriver(AutonomousCar car, FaultSwitchboard faults, RandomGenerator decisions, int junctions) {
+    JunctionDriver(AutonomousCar car, FaultSwitchboard faults, RandomGenerator decisions, Route route, int junctions) {
         this.car = car;
         this.faults = faults;
         this.decisions = decisions;
+        this.route = route;
         this.exitsTaken = new int[junctions][4];
     }
 
@@ -158,7 +161,7 @@ final class JunctionDriver {
         // a stale hold is only taken over once the square is seen to be empty
         if (!car.scene().isOccupiedByOther(next, car)
                 && car.scene().occupancy().request(next.id(), car.id(), car.scene().tick(), PATIENCE)) {
-            Compass chosen = chooseExit(next);
+            Compass chosen = chooseExit(next, lane);
             if (crossing) {
                 reserved = next.id();
                 reservedExit = chosen;
@@ -275,13 +278,12 @@ final class JunctionDriver {
         return exit == lane.left() ? LEFT_TURN_SPEED : U_TURN_SPEED;
     }
 
-    private Compass chooseExit(Junction junction) {
+    private Compass chooseExit(Junction junction, Compass heading) {
         List<Compass> arms = junction.arms();
         int[] taken = exitsTaken[junction.id()];
-        var target = car.scene().target().position();
         for (int pass = 0; pass < 1000; pass++) {
             Compass best = null;
-            double bestDistance = Double.MAX_VALUE;
+            double bestDistance = Double.POSITIVE_INFINITY;
             for (Compass c : new Compass[] {Compass.EAST, Compass.SOUTH, Compass.WEST, Compass.NORTH}) {
                 if (!arms.contains(c)) {
                     continue;
@@ -289,8 +291,9 @@ final class JunctionDriver {
                 int count = taken[c.ordinal()];
                 boolean eligible = count == 0 || (pass > 0 && decisions.nextDouble() < Math.pow(0.8, count));
                 if (eligible) {
-                    double distance = junction.exitPoint(c, EXIT_BEYOND_SQUARE).distanceTo(target);
-                    if (distance < bestDistance) {
+                    double turn = c == heading.opposite() ? Route.U_TURN_COST : 0;
+                    double distance = route.distance(junction, c) + turn;
+                    if (best == null || distance < bestDistance) {
                         best = c;
                         bestDistance = distance;
                     }

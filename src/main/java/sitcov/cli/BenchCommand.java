@@ -18,7 +18,7 @@ import sitcov.world.WorldMap;
  * The only command that reads the clock for its results: timing is its point.
  */
 final class BenchCommand implements Command {
-    static final int DEFAULT_MAPS = 40;
+    static final int DEFAULT_MAPS = 200;
     static final int DEFAULT_CANDIDATES = 20_000;
     private static final long WARM_UP_SEED = 1_000_000L;
 
@@ -47,7 +47,7 @@ final class BenchCommand implements Command {
         int maps = options.count("--maps", 1).orElse(DEFAULT_MAPS);
         int candidates = options.count("--candidates", 1).orElse(DEFAULT_CANDIDATES);
 
-        int warmRuns = Math.min(maps, 5);
+        int warmRuns = Math.min(maps, 50);
         int warmCandidates = Math.min(candidates, 5_000);
         err.println("bench: warming up (" + warmRuns + " runs, " + warmCandidates + " candidate maps) ...");
         for (int i = 0; i < warmRuns; i++) {

@@ -30,7 +30,7 @@ public final class Main {
                 new SimulateCommand(),
                 new MapCommand(),
                 new PlannedCommand("coverage", "--maps N", "situation coverage reached by random maps"),
-                new PlannedCommand("faults", "[--calibrate --maps N]", "list or calibrate the seeded faults"),
+                new FaultsCommand(),
                 new PlannedCommand("replay", "FILE", "replay a recorded run"),
                 new BenchCommand()));
     }

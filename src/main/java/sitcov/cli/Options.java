@@ -1,5 +1,8 @@
 package sitcov.cli;
 
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSet;
+
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
@@ -90,6 +93,19 @@ final class Options {
         } catch (NumberFormatException e) {
             throw new UsageException(command + ": " + name + " needs a whole number such as 42 (64-bit), not '"
                     + text.get() + "'.");
+        }
+    }
+
+    /** A fault set such as PAPER, ALL,-0 or 8-13. */
+    Optional<Set<Fault>> faults(String name) throws UsageException {
+        Optional<String> text = value(name);
+        if (text.isEmpty()) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(FaultSet.parse(text.get()));
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(command + ": " + name + ": " + e.getMessage() + ".");
         }
     }
 

@@ -210,15 +210,23 @@ final class Overtaker {
 
     private boolean oncomingLaneClear(double laneCentre, double finish) {
         TrafficSensor traffic = car.traffic();
-        double speed = traffic.oncomingSpeed();
-        if (faults.isActive(Fault.ONCOMING_AT_HALF_SPEED) && Double.isFinite(traffic.oncomingGap())) {
-            faults.effective(Fault.ONCOMING_AT_HALF_SPEED);
-            speed /= 2;
-        }
         double ticks = ticksToTravel(finish);
-        boolean clearOfOncoming = traffic.oncomingGap() - speed * ticks > finish + SAFETY_MARGIN;
+        boolean clearOfOncoming = clearOf(traffic.oncomingGap(), traffic.oncomingSpeed(), ticks, finish);
+        if (faults.isActive(Fault.ONCOMING_AT_HALF_SPEED) && Double.isFinite(traffic.oncomingGap())) {
+            boolean misjudged = clearOf(traffic.oncomingGap(), traffic.oncomingSpeed() / 2, ticks, finish);
+            if (misjudged != clearOfOncoming) {
+                faults.effective(Fault.ONCOMING_AT_HALF_SPEED);
+            } else {
+                faults.reached(Fault.ONCOMING_AT_HALF_SPEED);
+            }
+            clearOfOncoming = misjudged;
+        }
         // anything in the other lane where the pass will be (a car standing there, one alongside)
         return clearOfOncoming && traffic.otherLaneGap() > finish + SAFETY_MARGIN;
+    }
+
+    private static boolean clearOf(double gap, double speed, double ticks, double finish) {
+        return gap - speed * ticks > finish + SAFETY_MARGIN;
     }
 
     /** Ticks to travel {@code distance} from the current speed, accelerating up to the passing speed. */

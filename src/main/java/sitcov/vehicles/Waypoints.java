@@ -7,12 +7,14 @@ import sitcov.faults.FaultSwitchboard;
 
 /**
  * The autonomous car's waypoint register: waypoints are created here (faults 1–4 displace them,
- * fault 0 reuses the previous identity) and looked up by identity, first registered first, so a
- * reused identity finds the stale waypoint.
+ * fault 0 reuses the previous identity) and looked up by identity, oldest first. The register
+ * remembers the waypoint reached last (as the original left reached waypoints in the world), so a
+ * reused identity finds that stale waypoint; with fresh identities it is never looked up.
  */
 final class Waypoints {
     private final FaultSwitchboard faults;
     private final List<Waypoint> registered = new ArrayList<>();
+    private Waypoint lastReached;
     private int nextId = 1;
     private int lastId;
 
@@ -38,35 +40,41 @@ final class Waypoints {
         }
         int id = nextId++;
         if (faults.isActive(Fault.STALE_WAYPOINT_IDENTITY) && lastId != 0) {
+            faults.reached(Fault.STALE_WAYPOINT_IDENTITY);
             id = lastId;
-            if (lookup(id) != null) {
-                faults.effective(Fault.STALE_WAYPOINT_IDENTITY);
-            } else {
-                faults.reached(Fault.STALE_WAYPOINT_IDENTITY);
-            }
         }
         lastId = id;
         registered.add(new Waypoint(id, px, py, kind));
         return id;
     }
 
-    /** The first waypoint registered under {@code id}, or null. */
+    /** The oldest waypoint remembered under {@code id}, or null. */
     Waypoint lookup(int id) {
         for (Waypoint w : registered) {
             if (w.id() == id) {
+                if (lastReached != null && lastReached.id() == id) {
+                    // only a reused identity gets here: the stale waypoint shadows the new one
+                    faults.effective(Fault.STALE_WAYPOINT_IDENTITY);
+                    return lastReached;
+                }
                 return w;
             }
         }
         return null;
     }
 
-    /** Forgets every waypoint registered under {@code id}. */
+    /** Retires every waypoint registered under {@code id}; the last of them is remembered as reached. */
     void remove(int id) {
-        registered.removeIf(w -> w.id() == id);
+        for (int i = registered.size() - 1; i >= 0; i--) {
+            if (registered.get(i).id() == id) {
+                lastReached = registered.remove(i);
+            }
+        }
     }
 
     void clear() {
         registered.clear();
+        lastReached = null;
     }
 
     private Fault displacementFault() {

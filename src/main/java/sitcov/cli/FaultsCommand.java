@@ -1,0 +1,72 @@
+package sitcov.cli;
+
+import java.io.PrintStream;
+import java.util.List;
+import java.util.Set;
+import sitcov.experiment.FaultCalibration;
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSet;
+
+/**
+ * {@code faults}: lists the catalogue; with {@code --calibrate --maps N}, runs every fault of a
+ * set on N random maps and prints how often each is reached, effective and found.
+ */
+final class FaultsCommand implements Command {
+    @Override
+    public String name() {
+        return "faults";
+    }
+
+    @Override
+    public String synopsis() {
+        return "[--calibrate --maps N [--seed S0 (default: 1)] [--faults SET (default: ALL)] [--threads T]]";
+    }
+
+    @Override
+    public String summary() {
+        return "list the seeded faults, or calibrate them: reached, effective and found on N random maps";
+    }
+
+    @Override
+    public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
+        Options options = Options.parse(name(), args, Set.of("--maps", "--seed", "--faults", "--threads"),
+                Set.of("--calibrate"));
+        options.noPositional();
+        if (!options.has("--calibrate")) {
+            for (String calibrationOnly : List.of("--maps", "--seed", "--faults", "--threads")) {
+                if (options.has(calibrationOnly)) {
+                    throw new UsageException("faults: " + calibrationOnly + " goes with --calibrate; add --calibrate"
+                            + " to run the faults, or drop it to list them.");
+                }
+            }
+            list(out);
+            return ExitCode.OK;
+        }
+        int maps = options.count("--maps", 1).orElseThrow(() -> new UsageException(
+                "faults: --calibrate needs --maps N, the number of random maps to run each fault on (e.g. 1000)."));
+        long first = options.seed("--seed").orElse(1L);
+        if (first > Long.MAX_VALUE - (maps - 1)) {
+            throw new UsageException("faults: seeds " + first + " + " + maps + " maps run past the largest seed;"
+                    + " choose a smaller --seed.");
+        }
+        Set<Fault> faults = options.faults("--faults").orElse(FaultSet.parse("ALL"));
+        if (faults.isEmpty()) {
+            throw new UsageException("faults: the fault set is empty; name at least one fault (e.g. --faults PAPER).");
+        }
+        int threads = options.count("--threads", 1).orElse(Runtime.getRuntime().availableProcessors());
+        Calibration.Progress progress = new Calibration.Progress(err, "faults", maps,
+                err == System.err && System.console() != null, System::nanoTime);
+        var results = FaultCalibration.run(first, maps, faults, threads, progress::done);
+        new FaultCalibrationTable(first, maps, faults, results).print(out);
+        return ExitCode.OK;
+    }
+
+    private static void list(PrintStream out) {
+        out.println("The seeded faults of the autonomous car (catalogue: faults/README.md).");
+        out.println("Fault sets: PAPER (*), ALL, NONE, ids, ranges such as 8-13, exclusions such as ALL,-0.");
+        out.println();
+        for (Fault f : Fault.values()) {
+            out.printf("%3d %s %-34s %s%n", f.id(), f.paperId().isPresent() ? "*" : " ", f.label(), f.description());
+        }
+    }
+}

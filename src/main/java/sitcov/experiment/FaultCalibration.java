@@ -1,0 +1,64 @@
+package sitcov.experiment;
+
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.function.IntConsumer;
+import sitcov.faults.Fault;
+import sitcov.oracle.RunResult;
+import sitcov.world.MapGenerator;
+import sitcov.world.WorldMap;
+
+/**
+ * Every fault of a set on maps {@code first .. first+maps-1} (internal seed = external seed): one
+ * fault-free run per map and one run per fault, judged by the {@link DifferentialOracle}. Maps run
+ * in parallel, results come back in map order, so the outcome does not depend on the thread count.
+ */
+public final class FaultCalibration {
+    private FaultCalibration() {
+    }
+
+    /** The verdicts of one map, in fault id order, beside its fault-free run. */
+    public record MapVerdicts(RunResult faultFree, List<FaultVerdict> verdicts) {
+    }
+
+    public static List<MapVerdicts> run(long first, int maps, Set<Fault> faults, int threads, IntConsumer progress) {
+        List<Fault> ordered = new ArrayList<>(faults.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(faults));
+        ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, threads));
+        try {
+            List<Future<MapVerdicts>> futures = new ArrayList<>(maps);
+            for (int i = 0; i < maps; i++) {
+                long seed = first + i;
+                futures.add(pool.submit(() -> judgeMap(MapGenerator.generate(seed), seed, ordered)));
+            }
+            List<MapVerdicts> all = new ArrayList<>(maps);
+            for (Future<MapVerdicts> f : futures) {
+                all.add(f.get());
+                progress.accept(all.size());
+            }
+            return all;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("fault calibration interrupted", e);
+        } catch (ExecutionException e) {
+            throw new IllegalStateException("fault calibration failed: " + e.getCause(), e.getCause());
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    static MapVerdicts judgeMap(WorldMap map, long internalSeed, List<Fault> faults) {
+        RunResult faultFree = Simulator.run(map, internalSeed);
+        List<FaultVerdict> verdicts = new ArrayList<>(faults.size());
+        for (Fault fault : faults) {
+            RunRecord faulty = Simulator.run(map, internalSeed, EnumSet.of(fault), RunObserver.NONE);
+            verdicts.add(DifferentialOracle.judge(faultFree, faulty, fault));
+        }
+        return new MapVerdicts(faultFree, verdicts);
+    }
+}

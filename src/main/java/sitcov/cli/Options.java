@@ -1,8 +1,5 @@
 package sitcov.cli;
 
-import sitcov.faults.Fault;
-import sitcov.faults.FaultSet;
-
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
@@ -13,6 +10,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSet;
 
 /**
  * The options of one command: {@code --name value} (or {@code --name=value}) for valued options,

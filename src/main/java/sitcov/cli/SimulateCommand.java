@@ -10,7 +10,10 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Collectors;
 import sitcov.experiment.RunObserver;
+import sitcov.experiment.RunRecord;
 import sitcov.experiment.Simulator;
+import sitcov.faults.Activation;
+import sitcov.faults.Fault;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.RunResult;
@@ -37,8 +40,8 @@ final class SimulateCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "--seed S [--internal-seed I (default: S)] [--png FILE] [--trace FILE.csv]"
-                + " | --load FILE [--internal-seed I] [--png FILE] [--trace FILE.csv]"
+        return "--seed S [--internal-seed I (default: S)] [--faults SET] [--png FILE] [--trace FILE.csv]"
+                + " | --load FILE [--internal-seed I] [--faults SET] [--png FILE] [--trace FILE.csv]"
                 + " | --maps N [--seed S0 (default: 1)] [--summary]";
     }
 
@@ -50,7 +53,7 @@ final class SimulateCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args,
-                Set.of("--seed", "--internal-seed", "--load", "--png", "--trace", "--maps"), Set.of("--summary"));
+                Set.of("--seed", "--internal-seed", "--load", "--png", "--trace", "--maps", "--faults"), Set.of("--summary"));
         options.noPositional();
         if (options.has("--maps")) {
             return calibrate(options, out, err);
@@ -65,6 +68,7 @@ final class SimulateCommand implements Command {
             throw new UsageException("simulate: give either --seed S to generate a map or --load FILE to read one"
                     + " (or --maps N for many).");
         }
+        Set<Fault> faults = options.faults("--faults").orElse(Set.of());
         Optional<Path> png = options.outputFile("--png");
         Optional<Path> trace = options.outputFile("--trace");
 
@@ -72,6 +76,7 @@ final class SimulateCommand implements Command {
         long internalSeed = internal.orElse(map.seed());
         TrajectoryRecorder recorder = png.isPresent() ? new TrajectoryRecorder() : null;
         RunResult result;
+        List<Activation> activations;
         try (TraceWriter writer = trace.isPresent() ? new TraceWriter(trace.get(), map.seed(), internalSeed) : null) {
             RunObserver observer = (tick, scene, detector) -> {
                 if (recorder != null) {
@@ -81,12 +86,21 @@ final class SimulateCommand implements Command {
                     writer.afterTick(tick, scene, detector);
                 }
             };
-            result = Simulator.run(map, internalSeed, Set.of(), observer).result();
+            RunRecord record = Simulator.run(map, internalSeed, faults, observer);
+            result = record.result();
+            activations = record.activations();
         } catch (IOException | UncheckedIOException e) {
             err.println("sitcov: simulate: could not write the trace " + trace.orElse(null) + ": " + e.getMessage());
             return ExitCode.FAILURE;
         }
         out.println(resultLine(result));
+        for (Activation a : activations) {
+            if (a.active()) {
+                out.println("  fault " + a.fault().id() + " (" + a.fault().label() + "): "
+                        + (a.effective() ? "effective " + a.effectiveCount() + " times, first at tick " + a.firstEffectiveTick()
+                        : a.reached() ? "reached, never effective" : "not reached"));
+            }
+        }
         trace.ifPresent(t -> out.println("Trace written to " + t + " (" + result.ticks() + " ticks, one row each)"));
         if (png.isPresent()) {
             try {
@@ -102,7 +116,7 @@ final class SimulateCommand implements Command {
     }
 
     private int calibrate(Options options, PrintStream out, PrintStream err) throws UsageException {
-        for (String single : List.of("--internal-seed", "--load", "--png", "--trace")) {
+        for (String single : List.of("--internal-seed", "--load", "--png", "--trace", "--faults")) {
             if (options.has(single)) {
                 throw new UsageException("simulate: " + single + " goes with one run, not with --maps N; drop it,"
                         + " or simulate one of the maps with --seed S.");

@@ -54,7 +54,7 @@ final class Overtaker {
             return;
         }
         lane = currentLane;
-        Sighting s = look(laneCentre, false);
+        Sighting s = look(laneCentre);
         if (Double.isNaN(s.nearest) || s.nearest > Lidar.RANGE) {
             stage = OvertakingStage.NOT_OVERTAKING;
             return;
@@ -152,7 +152,7 @@ final class Overtaker {
     private void advance(double laneCentre, Waypoint reached) {
         switch (stage) {
             case START -> {
-                Sighting s = look(laneCentre, true);
+                Sighting s = look(laneCentre);
                 double farthest = Double.isNaN(s.farthest) ? PARKED_CAR_LENGTH : s.farthest;
                 if (faults.isActive(Fault.SECOND_PULL_OUT) && farthest > 6) {
                     faults.effective(Fault.SECOND_PULL_OUT);
@@ -164,7 +164,7 @@ final class Overtaker {
                 stage = OvertakingStage.PULLED_OUT;
             }
             case PULLED_OUT -> {
-                Sighting s = look(laneCentre, true);
+                Sighting s = look(laneCentre);
                 if (!Double.isNaN(s.farthest) && s.farthest > 0) {
                     // another parked car came into view beyond the one passed: keep passing
                     replace(s.farthest + BUFFER + 1, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
@@ -278,28 +278,37 @@ final class Overtaker {
     private record Sighting(double nearest, double farthest, double opposite, boolean oppositeBeside) {
     }
 
-    private Sighting look(double laneCentre, boolean passing) {
-        double centre = lane.bearing();
-        if (passing && faults.isActive(Fault.OBSTACLE_SEARCH_ALONG_HEADING)) {
-            if (Math.abs(Bearing.turn(centre, car.heading())) > 1e-9) {
-                faults.effective(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
-            } else {
-                faults.reached(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
-            }
-            centre = car.heading();
-        }
+    private Sighting look(double laneCentre) {
         Lidar lidar = car.lidar();
-        int hits = lidar.sweep(car.x(), car.y(), centre, lane, car.scene(), car);
+        if (!faults.isActive(Fault.OBSTACLE_SEARCH_ALONG_HEADING)) {
+            lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.scene(), car);
+            return sighting(lidar, laneCentre, 0);
+        }
+        // the faulty car takes the road to run along its heading: hits are read in the heading's frame
+        int hits = lidar.sweep(car.x(), car.y(), car.heading(), lane, car.scene(), car);
+        Sighting faulty = sighting(lidar, laneCentre, Math.toRadians(Bearing.turn(lane.bearing(), car.heading())));
+        if (hits > 0 && !faulty.equals(sighting(lidar, laneCentre, 0))) {
+            faults.effective(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
+        } else {
+            faults.reached(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
+        }
+        return faulty;
+    }
+
+    /** Parked cars in the lane ahead and on the other side, with the hits turned by {@code phi} first. */
+    private static Sighting sighting(Lidar lidar, double laneCentre, double phi) {
+        double cos = Math.cos(phi);
+        double sin = Math.sin(phi);
         double nearest = Double.NaN;
         double farthest = Double.NaN;
         double opposite = Double.NaN;
         boolean beside = false;
-        for (int h = 0; h < hits; h++) {
+        for (int h = 0; h < lidar.hits(); h++) {
             if (!lidar.isParkedCar(h)) {
                 continue;
             }
-            double u = lidar.u(h);
-            double v = lidar.v(h);
+            double u = lidar.u(h) * cos - lidar.v(h) * sin;
+            double v = lidar.u(h) * sin + lidar.v(h) * cos;
             if (u > 0 && v > laneCentre - 1.4 && v < laneCentre + 1.4) {
                 nearest = Double.isNaN(nearest) ? u : Math.min(nearest, u);
                 farthest = Double.isNaN(farthest) ? u : Math.max(farthest, u);

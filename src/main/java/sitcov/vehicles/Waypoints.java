@@ -12,6 +12,9 @@ import sitcov.faults.FaultSwitchboard;
  * reused identity finds that stale waypoint; with fresh identities it is never looked up.
  */
 final class Waypoints {
+    private static final Fault[] DISPLACEMENTS = {Fault.WAYPOINTS_NORTH_WEST, Fault.WAYPOINTS_NORTH_EAST,
+        Fault.WAYPOINTS_SOUTH_WEST, Fault.WAYPOINTS_SOUTH_EAST};
+
     private final FaultSwitchboard faults;
     private final List<Waypoint> registered = new ArrayList<>();
     private Waypoint lastReached;
@@ -26,17 +29,13 @@ final class Waypoints {
     int create(double x, double y, Waypoint.Kind kind) {
         double px = x;
         double py = y;
-        Fault displacement = displacementFault();
-        if (displacement != null) {
-            px += switch (displacement) {
-                case WAYPOINTS_NORTH_WEST, WAYPOINTS_SOUTH_WEST -> -1;
-                default -> 1;
-            };
-            py += switch (displacement) {
-                case WAYPOINTS_NORTH_WEST, WAYPOINTS_NORTH_EAST -> -1;
-                default -> 1;
-            };
-            faults.effective(displacement);
+        // displacements add up when several are on, so each fault of a set acts
+        for (Fault f : DISPLACEMENTS) {
+            if (faults.isActive(f)) {
+                px += f == Fault.WAYPOINTS_NORTH_WEST || f == Fault.WAYPOINTS_SOUTH_WEST ? -1 : 1;
+                py += f == Fault.WAYPOINTS_NORTH_WEST || f == Fault.WAYPOINTS_NORTH_EAST ? -1 : 1;
+                faults.effective(f);
+            }
         }
         int id = nextId++;
         if (faults.isActive(Fault.STALE_WAYPOINT_IDENTITY) && lastId != 0) {
@@ -75,16 +74,5 @@ final class Waypoints {
     void clear() {
         registered.clear();
         lastReached = null;
-    }
-
-    private Fault displacementFault() {
-        // only the lowest-numbered active displacement applies, as in the original
-        for (Fault f : new Fault[] {Fault.WAYPOINTS_NORTH_WEST, Fault.WAYPOINTS_NORTH_EAST,
-            Fault.WAYPOINTS_SOUTH_WEST, Fault.WAYPOINTS_SOUTH_EAST}) {
-            if (faults.isActive(f)) {
-                return f;
-            }
-        }
-        return null;
     }
 }

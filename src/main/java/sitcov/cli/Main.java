@@ -29,7 +29,7 @@ public final class Main {
                 new PlannedCommand("run", "PRESET", "run an experiment preset from experiments/"),
                 new SimulateCommand(),
                 new MapCommand(),
-                new PlannedCommand("coverage", "--maps N", "situation coverage reached by random maps"),
+                new CoverageCommand(),
                 new FaultsCommand(),
                 new PlannedCommand("replay", "FILE", "replay a recorded run"),
                 new BenchCommand()));

@@ -1,0 +1,126 @@
+package sitcov.coverage;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import sitcov.world.Layout;
+
+/**
+ * Which criteria span the coverage grid and how each is binned, read from a small text file:
+ * <pre>
+ * sitcov-grid 1
+ * criterion target-obstacle 1.01 6.01 11.01 16.01 21.01 26.01 inf
+ * </pre>
+ * one line per criterion with its bin edges ({@code inf} for an open top); {@code #} starts a comment.
+ */
+public record GridDefinition(List<Criterion> criteria, List<Bins> bins) {
+    public static final String HEADER = "sitcov-grid 1";
+
+    public GridDefinition {
+        criteria = List.copyOf(criteria);
+        bins = List.copyOf(bins);
+        if (criteria.isEmpty() || criteria.size() != bins.size()) {
+            throw new IllegalArgumentException("a grid needs at least one criterion, each with its bins");
+        }
+    }
+
+    /** The paper's 6×6×6 grid (reference §7.2), with a value outside every bin counted as invalid. */
+    public static GridDefinition paper() {
+        double inf = Double.POSITIVE_INFINITY;
+        return new GridDefinition(List.of(Criterion.TARGET_TO_OBSTACLE, Criterion.START_TO_TARGET,
+                Criterion.PREVIOUS_JUNCTION_TO_TARGET), List.of(
+                new Bins(new double[] {1.01, 6.01, 11.01, 16.01, 21.01, 26.01, inf}),
+                new Bins(new double[] {0, 40, 80, 120, 160, 200, 240}),
+                new Bins(new double[] {0, 10, 20, 30, 40, 50, inf})));
+    }
+
+    public int cells() {
+        int cells = 1;
+        for (Bins b : bins) {
+            cells *= b.count();
+        }
+        return cells;
+    }
+
+    /** The criteria values of a layout, in the grid's criterion order. */
+    public double[] values(Layout layout) {
+        double[] v = new double[criteria.size()];
+        for (int i = 0; i < v.length; i++) {
+            v[i] = criteria.get(i).value(layout);
+        }
+        return v;
+    }
+
+    /** The cell of these criteria values: 0 .. cells()-1, the first criterion varying slowest; or {@link Bins#INVALID}. */
+    public int cellOf(double[] values) {
+        int cell = 0;
+        for (int i = 0; i < values.length; i++) {
+            int bin = bins.get(i).of(values[i]);
+            if (bin == Bins.INVALID) {
+                return Bins.INVALID;
+            }
+            cell = cell * bins.get(i).count() + bin;
+        }
+        return cell;
+    }
+
+    /** The bin of criterion {@code criterion} in {@code cell}. */
+    public int binOf(int cell, int criterion) {
+        int rest = cell;
+        for (int i = bins.size() - 1; i > criterion; i--) {
+            rest /= bins.get(i).count();
+        }
+        return rest % bins.get(criterion).count();
+    }
+
+    public static GridDefinition read(Path file) throws IOException {
+        return parse(Files.readAllLines(file), file.toString());
+    }
+
+    /** @throws IllegalArgumentException naming the line and what was expected */
+    public static GridDefinition parse(List<String> lines, String source) {
+        List<Criterion> criteria = new ArrayList<>();
+        List<Bins> bins = new ArrayList<>();
+        boolean header = false;
+        for (int n = 0; n < lines.size(); n++) {
+            String line = lines.get(n).replaceAll("#.*", "").strip();
+            if (line.isEmpty()) {
+                continue;
+            }
+            String where = source + ":" + (n + 1) + ": ";
+            if (!header) {
+                if (!line.equals(HEADER)) {
+                    throw new IllegalArgumentException(where + "expected the first line '" + HEADER + "', found '" + line + "'");
+                }
+                header = true;
+                continue;
+            }
+            String[] f = line.split("\\s+");
+            if (!f[0].equals("criterion") || f.length < 4) {
+                throw new IllegalArgumentException(where + "expected 'criterion NAME EDGE EDGE ...' with at least two"
+                        + " edges, found '" + line + "'");
+            }
+            try {
+                Criterion c = Criterion.ofKey(f[1]);
+                if (criteria.contains(c)) {
+                    throw new IllegalArgumentException("criterion " + f[1] + " is given twice");
+                }
+                double[] edges = new double[f.length - 2];
+                for (int i = 2; i < f.length; i++) {
+                    edges[i - 2] = f[i].equalsIgnoreCase("inf") ? Double.POSITIVE_INFINITY : Double.parseDouble(f[i]);
+                }
+                criteria.add(c);
+                bins.add(new Bins(edges));
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException(where + e.getMessage(), e);
+            }
+        }
+        if (criteria.isEmpty()) {
+            throw new IllegalArgumentException(source + ": no criterion lines; expected '" + HEADER
+                    + "' then lines 'criterion NAME EDGE EDGE ...'");
+        }
+        return new GridDefinition(criteria, bins);
+    }
+}

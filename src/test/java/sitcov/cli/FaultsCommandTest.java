@@ -1,0 +1,60 @@
+package sitcov.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+
+class FaultsCommandTest {
+    @Test
+    void listingShowsAllTwentyFaultsAndMarksThePapersSeven() {
+        CliRunner r = CliRunner.run("faults");
+        assertEquals(0, r.exitCode(), r.err());
+        long rows = r.out().lines().filter(l -> l.matches("\\s*\\d+ [* ] \\S+.*")).count();
+        long starred = r.out().lines().filter(l -> l.matches("\\s*\\d+ \\* \\S+.*")).count();
+        assertEquals(20, rows, r.out());
+        assertEquals(7, starred, r.out());
+        assertTrue(r.out().contains("18 * obstacle-search-along-heading"), r.out());
+    }
+
+    @Test
+    void calibrationPrintsOneRowPerFaultWithItsShares() {
+        CliRunner r = CliRunner.run("faults", "--calibrate", "--maps", "2", "--faults", "2,19", "--threads", "2");
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.out().contains("faults 2,19"), r.out());
+        // waypoints 1 m north-east put the car over a kerb or the centre line on every map
+        assertTrue(r.out().lines().anyMatch(l -> l.matches("\\s+2  waypoints-north-east\\s+100\\.0%\\s+100\\.0%\\s+100\\.0%.*")),
+                r.out());
+        assertTrue(r.out().lines().anyMatch(l -> l.startsWith(" 19  oncoming-at-half-speed")), r.out());
+        assertTrue(r.out().contains("Reproduce: sitcov faults --calibrate --maps 2 --seed 1 --faults 2,19"), r.out());
+    }
+
+    @Test
+    void calibrationOutputDoesNotDependOnTheThreadCount() {
+        CliRunner one = CliRunner.run("faults", "--calibrate", "--maps", "3", "--faults", "8,14", "--threads", "1");
+        CliRunner two = CliRunner.run("faults", "--calibrate", "--maps", "3", "--faults", "8,14", "--threads", "2");
+        assertEquals(one.out(), two.out());
+    }
+
+    @Test
+    void anUnknownFaultIsRefusedWithTheValidListAndExitCode2() {
+        CliRunner r = CliRunner.run("faults", "--calibrate", "--maps", "2", "--faults", "4,20");
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().contains("'20' is not a fault") && r.err().contains("ids 0-19"), r.err());
+        assertEquals("", r.out());
+    }
+
+    @Test
+    void calibratingWithoutAMapCountSaysWhatToAdd() {
+        CliRunner r = CliRunner.run("faults", "--calibrate");
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().contains("--maps N"), r.err());
+    }
+
+    @Test
+    void calibrationOptionsWithoutCalibrateAreRefused() {
+        CliRunner r = CliRunner.run("faults", "--maps", "5");
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().contains("goes with --calibrate"), r.err());
+    }
+}

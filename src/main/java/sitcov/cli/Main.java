@@ -26,7 +26,7 @@ public final class Main {
     /** The commands of this version of sitcov, in the order help lists them. */
     static Main standard() {
         return new Main(List.of(
-                new PlannedCommand("run", "PRESET", "run an experiment preset from experiments/"),
+                new RunCommand(),
                 new SimulateCommand(),
                 new MapCommand(),
                 new CoverageCommand(),

@@ -1,0 +1,72 @@
+package sitcov.cli;
+
+import java.io.IOException;
+import java.io.Reader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Properties;
+import java.util.Set;
+import sitcov.coverage.GridDefinition;
+import sitcov.experiment.BudgetKind;
+import sitcov.experiment.ExperimentConfig;
+import sitcov.faults.FaultSet;
+
+/** An experiment preset: a properties file in {@code experiments/}, named by file or by name. */
+final class Preset {
+    private static final Set<String> KEYS = Set.of("name", "master_seed", "candidates", "replications", "faults", "budget",
+            "grid", "description");
+
+    private Preset() {
+    }
+
+    static Path locate(String nameOrFile) throws UsageException {
+        Path direct = Path.of(nameOrFile);
+        if (Files.isRegularFile(direct)) {
+            return direct;
+        }
+        Path named = Path.of("experiments", nameOrFile + ".properties");
+        if (Files.isRegularFile(named)) {
+            return named;
+        }
+        throw new UsageException("run: no preset '" + nameOrFile + "': neither a file nor experiments/" + nameOrFile
+                + ".properties; the presets are the .properties files in experiments/ (e.g. smoke, paper-rq1).");
+    }
+
+    static ExperimentConfig read(Path file, Long masterSeedOverride) throws UsageException {
+        Properties p = new Properties();
+        try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            p.load(r);
+        } catch (IOException e) {
+            throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage());
+        }
+        for (String key : p.stringPropertyNames()) {
+            if (!KEYS.contains(key)) {
+                throw new UsageException("run: " + file + ": unknown key '" + key + "'; the keys are " + KEYS + ".");
+            }
+        }
+        String name = p.getProperty("name", file.getFileName().toString().replaceFirst("\\.properties$", ""));
+        try {
+            long seed = masterSeedOverride != null ? masterSeedOverride : Long.parseLong(required(p, "master_seed", file));
+            int candidates = Integer.parseInt(required(p, "candidates", file));
+            int replications = Integer.parseInt(p.getProperty("replications", "1").strip());
+            var faults = FaultSet.parse(p.getProperty("faults", "PAPER"));
+            BudgetKind budget = BudgetKind.ofKey(p.getProperty("budget", "ticks").strip());
+            String gridFile = p.getProperty("grid");
+            GridDefinition grid = gridFile == null ? GridDefinition.paper() : GridDefinition.read(Path.of(gridFile.strip()));
+            return new ExperimentConfig(name, seed, candidates, replications, faults, budget, grid);
+        } catch (IOException e) {
+            throw new UsageException("run: " + file + ": cannot read its grid: " + e.getMessage());
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("run: " + file + ": " + e.getMessage());
+        }
+    }
+
+    private static String required(Properties p, String key, Path file) throws UsageException {
+        String v = p.getProperty(key);
+        if (v == null) {
+            throw new UsageException("run: " + file + " lacks '" + key + "='; add it.");
+        }
+        return v.strip();
+    }
+}

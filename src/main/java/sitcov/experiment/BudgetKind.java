@@ -1,0 +1,29 @@
+package sitcov.experiment;
+
+/**
+ * How much the random driver may spend in a replication, measured on what the coverage driver
+ * spent: the paper's equal wall-clock time (not reproducible), or equal simulated ticks (reproducible).
+ */
+public enum BudgetKind {
+    WALL_CLOCK("wall-clock"),
+    TICKS("ticks");
+
+    private final String key;
+
+    BudgetKind(String key) {
+        this.key = key;
+    }
+
+    public String key() {
+        return key;
+    }
+
+    public static BudgetKind ofKey(String key) {
+        for (BudgetKind b : values()) {
+            if (b.key.equals(key)) {
+                return b;
+            }
+        }
+        throw new IllegalArgumentException("unknown budget '" + key + "'; use wall-clock or ticks");
+    }
+}

@@ -1,0 +1,53 @@
+package sitcov.experiment;
+
+import java.util.List;
+import sitcov.faults.Fault;
+
+/**
+ * The paper's measures over the maps one method ran in one replication (§5.1 of the paper), under
+ * one detection notion: method-prop-fault (share of the faults found on at least one map),
+ * prop-map-all-fault (share of maps finding every fault), avg-map-fault (faults found per map), and
+ * per fault the share of maps finding it (Table 2).
+ */
+public record Metrics(int maps, double methodPropFault, double propMapAllFault, double avgMapFault, double[] perFault) {
+    public Metrics {
+        perFault = perFault.clone();
+    }
+
+    @Override
+    public double[] perFault() {
+        return perFault.clone();
+    }
+
+    public static Metrics of(List<MapRun> runs, List<Fault> faults, boolean paperNotion) {
+        int n = runs.size();
+        int k = faults.size();
+        int[] found = new int[k];
+        int allFound = 0;
+        long total = 0;
+        for (MapRun run : runs) {
+            int onMap = 0;
+            for (int f = 0; f < k; f++) {
+                FaultVerdict v = run.verdicts().get(f);
+                if (v.fault() != faults.get(f)) {
+                    throw new IllegalArgumentException("verdicts of map " + run.externalSeed() + " are not in fault order");
+                }
+                boolean hit = paperNotion ? v.foundByPaperNotion() : v.detection().found();
+                if (hit) {
+                    found[f]++;
+                    onMap++;
+                }
+            }
+            total += onMap;
+            allFound += onMap == k && k > 0 ? 1 : 0;
+        }
+        int faultsFoundAnywhere = 0;
+        double[] perFault = new double[k];
+        for (int f = 0; f < k; f++) {
+            faultsFoundAnywhere += found[f] > 0 ? 1 : 0;
+            perFault[f] = n == 0 ? 0 : (double) found[f] / n;
+        }
+        return new Metrics(n, k == 0 ? 0 : (double) faultsFoundAnywhere / k, n == 0 ? 0 : (double) allFound / n,
+                n == 0 ? 0 : (double) total / n, perFault);
+    }
+}

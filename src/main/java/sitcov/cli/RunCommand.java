@@ -16,6 +16,7 @@ import sitcov.experiment.MapRun;
 import sitcov.experiment.Method;
 import sitcov.experiment.Metrics;
 import sitcov.experiment.ReplicationResult;
+import sitcov.report.ExperimentFigures;
 import sitcov.report.ResultsWriter;
 
 /** {@code run PRESET}: the comparison experiment of a preset, into a fresh results folder. */
@@ -59,6 +60,7 @@ final class RunCommand implements Command {
         try {
             Files.createDirectories(folder);
             new ResultsWriter(config, results).writeAll(folder, extras);
+            ExperimentFigures.writeAll(config, results, folder);
         } catch (IOException e) {
             err.println("sitcov: run: could not write the results into " + folder + ": " + e.getMessage());
             return ExitCode.FAILURE;

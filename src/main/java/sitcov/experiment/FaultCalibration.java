@@ -4,10 +4,7 @@ import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Set;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
+import java.util.concurrent.Callable;
 import java.util.function.IntConsumer;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
@@ -29,27 +26,12 @@ public final class FaultCalibration {
 
     public static List<MapVerdicts> run(long first, int maps, Set<Fault> faults, int threads, IntConsumer progress) {
         List<Fault> ordered = new ArrayList<>(faults.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(faults));
-        ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, threads));
-        try {
-            List<Future<MapVerdicts>> futures = new ArrayList<>(maps);
-            for (int i = 0; i < maps; i++) {
-                long seed = first + i;
-                futures.add(pool.submit(() -> judgeMap(MapGenerator.generate(seed), seed, ordered)));
-            }
-            List<MapVerdicts> all = new ArrayList<>(maps);
-            for (Future<MapVerdicts> f : futures) {
-                all.add(f.get());
-                progress.accept(all.size());
-            }
-            return all;
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("fault calibration interrupted", e);
-        } catch (ExecutionException e) {
-            throw new IllegalStateException("fault calibration failed: " + e.getCause(), e.getCause());
-        } finally {
-            pool.shutdownNow();
+        List<Callable<MapVerdicts>> tasks = new ArrayList<>(maps);
+        for (int i = 0; i < maps; i++) {
+            long seed = first + i;
+            tasks.add(() -> judgeMap(MapGenerator.generate(seed), seed, ordered));
         }
+        return InOrder.run(tasks, threads, progress, "fault calibration");
     }
 
     static MapVerdicts judgeMap(WorldMap map, long internalSeed, List<Fault> faults) {

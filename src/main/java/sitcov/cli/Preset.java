@@ -5,6 +5,8 @@ import java.io.Reader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Properties;
 import java.util.Set;
 import sitcov.coverage.GridDefinition;
@@ -15,7 +17,7 @@ import sitcov.faults.FaultSet;
 /** An experiment preset: a properties file in {@code experiments/}, named by file or by name. */
 final class Preset {
     private static final Set<String> KEYS = Set.of("name", "master_seed", "candidates", "replications", "faults", "budget",
-            "grid", "description");
+            "grid", "description", "sweep");
 
     private Preset() {
     }
@@ -60,6 +62,34 @@ final class Preset {
         } catch (IllegalArgumentException e) {
             throw new UsageException("run: " + file + ": " + e.getMessage());
         }
+    }
+
+    /** The candidate budgets of an effort sweep ({@code sweep=200,500,...}), or an empty list for a comparison. */
+    static List<Integer> sweep(Path file) throws UsageException {
+        Properties p = new Properties();
+        try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            p.load(r);
+        } catch (IOException e) {
+            throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage());
+        }
+        String text = p.getProperty("sweep");
+        if (text == null) {
+            return List.of();
+        }
+        List<Integer> budgets = new ArrayList<>();
+        for (String part : text.split(",")) {
+            try {
+                int v = Integer.parseInt(part.strip());
+                if (v < 1) {
+                    throw new NumberFormatException();
+                }
+                budgets.add(v);
+            } catch (NumberFormatException e) {
+                throw new UsageException("run: " + file + ": sweep= needs positive candidate counts such as"
+                        + " 200,500,1000, not '" + part.strip() + "'.");
+            }
+        }
+        return budgets;
     }
 
     private static String required(Properties p, String key, Path file) throws UsageException {

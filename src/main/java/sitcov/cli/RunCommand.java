@@ -16,8 +16,10 @@ import sitcov.experiment.MapRun;
 import sitcov.experiment.Method;
 import sitcov.experiment.Metrics;
 import sitcov.experiment.ReplicationResult;
+import sitcov.experiment.Sweep;
 import sitcov.report.ExperimentFigures;
 import sitcov.report.ResultsWriter;
+import sitcov.report.SweepReport;
 
 /** {@code run PRESET}: the comparison experiment of a preset, into a fresh results folder. */
 final class RunCommand implements Command {
@@ -46,6 +48,10 @@ final class RunCommand implements Command {
         ExperimentConfig config = Preset.read(presetFile, options.seed("--seed").orElse(null));
         int threads = options.count("--threads", 1).orElse(Runtime.getRuntime().availableProcessors());
         Path folder = folder(options, config);
+        List<Integer> sweep = Preset.sweep(presetFile);
+        if (!sweep.isEmpty()) {
+            return sweep(config, sweep, threads, folder, presetFile, out, err);
+        }
         Calibration.Progress progress = new Calibration.Progress(err, "run " + config.name() + " (replications)",
                 config.replications(), err == System.err && System.console() != null, System::nanoTime);
         err.println("run: " + config.name() + ": " + config.replications() + " replications of " + config.candidates()
@@ -66,6 +72,33 @@ final class RunCommand implements Command {
             return ExitCode.FAILURE;
         }
         printTable(out, config, results);
+        out.printf(Locale.ROOT, "Results in %s (%.1f s on %d threads)%n", folder, seconds, threads);
+        return ExitCode.OK;
+    }
+
+    private static int sweep(ExperimentConfig config, List<Integer> budgets, int threads, Path folder, Path presetFile,
+                             PrintStream out, PrintStream err) {
+        int sets = budgets.size() * config.replications();
+        err.println("run: " + config.name() + ": effort sweep over " + budgets + " candidates, " + config.replications()
+                + " map sets each, on " + threads + " threads ...");
+        Calibration.Progress progress = new Calibration.Progress(err, "run " + config.name() + " (map sets)", sets,
+                err == System.err && System.console() != null, System::nanoTime);
+        long start = System.nanoTime();
+        List<Sweep.Point> points = Sweep.run(config, budgets, threads, System::nanoTime, progress::done);
+        double seconds = (System.nanoTime() - start) / 1e9;
+        try {
+            Files.createDirectories(folder);
+            SweepReport.write(config, points, folder, Map.of("threads", Integer.toString(threads),
+                    "wall_seconds", String.format(Locale.ROOT, "%.1f", seconds), "preset_file", presetFile.toString(),
+                    "sweep", budgets.toString().replaceAll("[\\[\\] ]", "")));
+        } catch (IOException e) {
+            err.println("sitcov: run: could not write the results into " + folder + ": " + e.getMessage());
+            return ExitCode.FAILURE;
+        }
+        double[] fit = Sweep.regression(points.stream().mapToDouble(Sweep.Point::cells).toArray(),
+                points.stream().mapToDouble(Sweep.Point::avgMapFault).toArray());
+        out.printf(Locale.ROOT, "%s: %d map sets; avg-map-fault = %.3f + %.4f x cells covered, r^2 = %.3f%n",
+                config.name(), points.size(), fit[0], fit[1], fit[2]);
         out.printf(Locale.ROOT, "Results in %s (%.1f s on %d threads)%n", folder, seconds, threads);
         return ExitCode.OK;
     }

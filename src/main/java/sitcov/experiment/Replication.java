@@ -46,6 +46,13 @@ public final class Replication {
         return RandomStreams.mix(masterSeed, "internal-seed:" + externalSeed);
     }
 
+    /** The coverage-filter driver alone, as in the paper's effort sweep (Fig. 4). */
+    public ReplicationResult runCoverageOnly() {
+        long start = nanoClock.getAsLong();
+        coverageDriver(start);
+        return new ReplicationResult(replication, runs, curve, mapNanos, nanoClock.getAsLong() - start, 0, 0);
+    }
+
     public ReplicationResult run() {
         long start = nanoClock.getAsLong();
         long ticks = coverageDriver(start);

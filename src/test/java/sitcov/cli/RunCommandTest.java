@@ -25,7 +25,7 @@ class RunCommandTest {
         assertArrayEquals(runs, Files.readAllBytes(two.resolve("runs.csv")), "runs.csv differs between 1 and 2 threads");
         assertArrayEquals(Files.readAllBytes(one.resolve("summary.csv")), Files.readAllBytes(two.resolve("summary.csv")));
         for (String file : new String[] {"summary.csv", "coverage-curve.csv", "timings.csv", "manifest.properties",
-            "fig2-faults-per-map.png", "fig3-coverage.png"}) {
+            "fig2-faults-per-map.png", "fig3-coverage.png", "table2.csv"}) {
             assertTrue(Files.size(one.resolve(file)) > 0, file);
         }
         assertTrue(Files.readString(one.resolve("manifest.properties")).contains("budget=ticks"));

@@ -1,9 +1,6 @@
 package sitcov.report;
 
 import java.io.IOException;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -187,17 +184,6 @@ public final class ResultsWriter {
     }
 
     private static void write(Path file, List<String> rows) throws IOException {
-        Path temp = Files.createTempFile(file.toAbsolutePath().getParent(), "." + file.getFileName(), ".tmp");
-        try {
-            try (Writer w = Files.newBufferedWriter(temp, StandardCharsets.UTF_8)) {
-                for (String row : rows) {
-                    w.write(row);
-                    w.write('\n');
-                }
-            }
-            AtomicFiles.moveIntoPlace(temp, file.toAbsolutePath());
-        } finally {
-            Files.deleteIfExists(temp);
-        }
+        AtomicFiles.writeLines(file, rows);
     }
 }

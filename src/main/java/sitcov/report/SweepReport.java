@@ -6,9 +6,6 @@ import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -90,17 +87,6 @@ public final class SweepReport {
     }
 
     private static void lines(Path file, List<String> rows) throws IOException {
-        Path temp = Files.createTempFile(file.toAbsolutePath().getParent(), "." + file.getFileName(), ".tmp");
-        try {
-            try (Writer w = Files.newBufferedWriter(temp, StandardCharsets.UTF_8)) {
-                for (String row : rows) {
-                    w.write(row);
-                    w.write('\n');
-                }
-            }
-            AtomicFiles.moveIntoPlace(temp, file.toAbsolutePath());
-        } finally {
-            Files.deleteIfExists(temp);
-        }
+        AtomicFiles.writeLines(file, rows);
     }
 }

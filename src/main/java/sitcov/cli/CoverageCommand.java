@@ -35,11 +35,7 @@ final class CoverageCommand implements Command {
         options.noPositional();
         int maps = options.count("--maps", 1).orElseThrow(() -> new UsageException(
                 "coverage: give --maps N, the number of random maps to place in the grid (e.g. 20000)."));
-        long first = options.seed("--seed").orElse(1L);
-        if (first > Long.MAX_VALUE - (maps - 1)) {
-            throw new UsageException("coverage: seeds " + first + " + " + maps + " maps run past the largest seed;"
-                    + " choose a smaller --seed.");
-        }
+        long first = options.firstSeed("--seed", maps);
         GridDefinition definition = grid(options.inputFile("--grid"));
         Optional<Path> png = options.outputFile("--png");
         CoverageGrid grid = new CoverageGrid(definition);

@@ -44,17 +44,13 @@ final class FaultsCommand implements Command {
         }
         int maps = options.count("--maps", 1).orElseThrow(() -> new UsageException(
                 "faults: --calibrate needs --maps N, the number of random maps to run each fault on (e.g. 1000)."));
-        long first = options.seed("--seed").orElse(1L);
-        if (first > Long.MAX_VALUE - (maps - 1)) {
-            throw new UsageException("faults: seeds " + first + " + " + maps + " maps run past the largest seed;"
-                    + " choose a smaller --seed.");
-        }
+        long first = options.firstSeed("--seed", maps);
         Set<Fault> faults = options.faults("--faults").orElse(FaultSet.parse("ALL"));
         if (faults.isEmpty()) {
             throw new UsageException("faults: the fault set is empty; name at least one fault (e.g. --faults PAPER).");
         }
         int threads = options.count("--threads", 1).orElse(Runtime.getRuntime().availableProcessors());
-        Calibration.Progress progress = new Calibration.Progress(err, "faults", maps,
+        Progress progress = new Progress(err, "faults", maps,
                 err == System.err && System.console() != null, System::nanoTime);
         var results = FaultCalibration.run(first, maps, faults, threads, progress::done);
         new FaultCalibrationTable(first, maps, faults, results).print(out);

@@ -95,6 +95,19 @@ final class Options {
         }
     }
 
+    /**
+     * The first of {@code maps} consecutive seeds, from {@code name} (default 1); refused when the
+     * range would run past the largest seed.
+     */
+    long firstSeed(String name, int maps) throws UsageException {
+        long first = seed(name).orElse(1L);
+        if (first > Long.MAX_VALUE - (maps - 1)) {
+            throw new UsageException(command + ": seeds " + first + " + " + maps + " maps run past the largest seed;"
+                    + " choose a smaller " + name + ".");
+        }
+        return first;
+    }
+
     /** A fault set such as PAPER, ALL,-0 or 8-13. */
     Optional<Set<Fault>> faults(String name) throws UsageException {
         Optional<String> text = value(name);

@@ -14,13 +14,13 @@ import sitcov.experiment.BudgetKind;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.faults.FaultSet;
 
-/** An experiment preset: a properties file in {@code experiments/}, named by file or by name. */
-final class Preset {
+/**
+ * An experiment preset: a properties file in {@code experiments/}, named by file or by name. A
+ * preset with {@code sweep=} budgets is an effort sweep; otherwise it is a comparison.
+ */
+record Preset(Path file, ExperimentConfig config, List<Integer> sweep) {
     private static final Set<String> KEYS = Set.of("name", "master_seed", "candidates", "replications", "faults", "budget",
             "grid", "description", "sweep");
-
-    private Preset() {
-    }
 
     static Path locate(String nameOrFile) throws UsageException {
         Path direct = Path.of(nameOrFile);
@@ -35,13 +35,17 @@ final class Preset {
                 + ".properties; the presets are the .properties files in experiments/ (e.g. smoke, paper-rq1).");
     }
 
-    static ExperimentConfig read(Path file, Long masterSeedOverride) throws UsageException {
+    static Preset read(Path file, Long masterSeedOverride) throws UsageException {
         Properties p = new Properties();
         try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             p.load(r);
         } catch (IOException e) {
             throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage());
         }
+        return new Preset(file, config(p, file, masterSeedOverride), sweep(p, file));
+    }
+
+    private static ExperimentConfig config(Properties p, Path file, Long masterSeedOverride) throws UsageException {
         for (String key : p.stringPropertyNames()) {
             if (!KEYS.contains(key)) {
                 throw new UsageException("run: " + file + ": unknown key '" + key + "'; the keys are " + KEYS + ".");
@@ -65,13 +69,7 @@ final class Preset {
     }
 
     /** The candidate budgets of an effort sweep ({@code sweep=200,500,...}), or an empty list for a comparison. */
-    static List<Integer> sweep(Path file) throws UsageException {
-        Properties p = new Properties();
-        try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            p.load(r);
-        } catch (IOException e) {
-            throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage());
-        }
+    private static List<Integer> sweep(Properties p, Path file) throws UsageException {
         String text = p.getProperty("sweep");
         if (text == null) {
             return List.of();

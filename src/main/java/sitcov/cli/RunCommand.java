@@ -44,15 +44,16 @@ final class RunCommand implements Command {
         if (options.positional().size() != 1) {
             throw new UsageException("run: name one preset, e.g. 'run smoke' or 'run experiments/paper-rq1.properties'.");
         }
-        Path presetFile = Preset.locate(options.positional().get(0));
-        ExperimentConfig config = Preset.read(presetFile, options.seed("--seed").orElse(null));
+        Preset preset = Preset.read(Preset.locate(options.positional().get(0)), options.seed("--seed").orElse(null));
+        Path presetFile = preset.file();
+        ExperimentConfig config = preset.config();
         int threads = options.count("--threads", 1).orElse(Runtime.getRuntime().availableProcessors());
         Path folder = folder(options, config);
-        List<Integer> sweep = Preset.sweep(presetFile);
+        List<Integer> sweep = preset.sweep();
         if (!sweep.isEmpty()) {
             return sweep(config, sweep, threads, folder, presetFile, out, err);
         }
-        Calibration.Progress progress = new Calibration.Progress(err, "run " + config.name() + " (replications)",
+        Progress progress = new Progress(err, "run " + config.name() + " (replications)",
                 config.replications(), err == System.err && System.console() != null, System::nanoTime);
         err.println("run: " + config.name() + ": " + config.replications() + " replications of " + config.candidates()
                 + " candidates, budget " + config.budget().key() + ", on " + threads + " threads ...");
@@ -81,7 +82,7 @@ final class RunCommand implements Command {
         int sets = budgets.size() * config.replications();
         err.println("run: " + config.name() + ": effort sweep over " + budgets + " candidates, " + config.replications()
                 + " map sets each, on " + threads + " threads ...");
-        Calibration.Progress progress = new Calibration.Progress(err, "run " + config.name() + " (map sets)", sets,
+        Progress progress = new Progress(err, "run " + config.name() + " (map sets)", sets,
                 err == System.err && System.console() != null, System::nanoTime);
         long start = System.nanoTime();
         List<Sweep.Point> points = Sweep.run(config, budgets, threads, System::nanoTime, progress::done);
@@ -145,7 +146,7 @@ final class RunCommand implements Command {
                     List<MapRun> runs = r.runsOf(m);
                     Metrics x = Metrics.of(runs, faults, paper);
                     maps += x.maps();
-                    cells += runs.stream().mapToInt(MapRun::cell).filter(c -> c >= 0).distinct().count();
+                    cells += x.cells();
                     prop += x.methodPropFault();
                     all += x.propMapAllFault();
                     avg += x.avgMapFault();

@@ -123,14 +123,10 @@ final class SimulateCommand implements Command {
             }
         }
         int maps = options.count("--maps", 1).orElseThrow();
-        long first = options.seed("--seed").orElse(1L);
-        if (first > Long.MAX_VALUE - (maps - 1)) {
-            throw new UsageException("simulate: seeds " + first + " + " + maps + " maps run past the largest seed;"
-                    + " choose a smaller --seed.");
-        }
+        long first = options.firstSeed("--seed", maps);
         boolean perRun = !options.has("--summary");
         Calibration calibration = new Calibration(first, maps, !perRun);
-        Calibration.Progress progress = new Calibration.Progress(err, "simulate", maps,
+        Progress progress = new Progress(err, "simulate", maps,
                 err == System.err && System.console() != null, System::nanoTime);
         for (int i = 0; i < maps; i++) {
             long seed = first + i;

@@ -5,11 +5,11 @@ import sitcov.faults.Fault;
 
 /**
  * The paper's measures over the maps one method ran in one replication (§5.1 of the paper), under
- * one detection notion: method-prop-fault (share of the faults found on at least one map),
+ * one detection notion: maps run, distinct coverage cells they fill, method-prop-fault (share of the faults found on at least one map),
  * prop-map-all-fault (share of maps finding every fault), avg-map-fault (faults found per map), and
  * per fault the share of maps finding it (Table 2).
  */
-public record Metrics(int maps, double methodPropFault, double propMapAllFault, double avgMapFault, double[] perFault) {
+public record Metrics(int maps, int cells, double methodPropFault, double propMapAllFault, double avgMapFault, double[] perFault) {
     public Metrics {
         perFault = perFault.clone();
     }
@@ -47,7 +47,8 @@ public record Metrics(int maps, double methodPropFault, double propMapAllFault, 
             faultsFoundAnywhere += found[f] > 0 ? 1 : 0;
             perFault[f] = n == 0 ? 0 : (double) found[f] / n;
         }
-        return new Metrics(n, k == 0 ? 0 : (double) faultsFoundAnywhere / k, n == 0 ? 0 : (double) allFound / n,
+        int cells = (int) runs.stream().mapToInt(MapRun::cell).filter(c -> c >= 0).distinct().count();
+        return new Metrics(n, cells, k == 0 ? 0 : (double) faultsFoundAnywhere / k, n == 0 ? 0 : (double) allFound / n,
                 n == 0 ? 0 : (double) total / n, perFault);
     }
 }

@@ -36,7 +36,7 @@ public final class Sweep {
                     List<MapRun> runs = r.runsOf(Method.COVERAGE_FILTER);
                     Metrics d = Metrics.of(runs, faults, false);
                     Metrics p = Metrics.of(runs, faults, true);
-                    return new Point(budget, s, runs.size(), runs.size(), (int) Math.round(d.methodPropFault() * faults.size()),
+                    return new Point(budget, s, runs.size(), d.cells(), (int) Math.round(d.methodPropFault() * faults.size()),
                             (int) Math.round(p.methodPropFault() * faults.size()), d.avgMapFault(), p.avgMapFault());
                 });
             }

@@ -100,11 +100,10 @@ public final class ResultsWriter {
         for (ReplicationResult r : results) {
             for (Method m : Method.values()) {
                 List<MapRun> runs = r.runsOf(m);
-                long cells = runs.stream().mapToInt(MapRun::cell).filter(c -> c >= 0).distinct().count();
                 for (String notion : List.of("differential", "paper")) {
                     Metrics x = Metrics.of(runs, faults, notion.equals("paper"));
                     StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%s,%d,%s,%d,%d,%d,%.4f,%.4f,%.4f",
-                            m.key(), r.replication(), notion, x.maps(), cells, config.grid().cells(), x.methodPropFault(),
+                            m.key(), r.replication(), notion, x.maps(), x.cells(), config.grid().cells(), x.methodPropFault(),
                             x.propMapAllFault(), x.avgMapFault()));
                     for (double p : x.perFault()) {
                         s.append(String.format(Locale.ROOT, ",%.4f", p));

@@ -40,6 +40,7 @@ class MetricsTest {
         List<MapRun> runs = List.of(map("F-F"), map("FPF"), map("---"), map("F-P"));
         Metrics differential = Metrics.of(runs, FAULTS, false);
         assertEquals(4, differential.maps());
+        assertEquals(1, differential.cells(), "all four hand-made maps are in cell 0");
         assertEquals(2.0 / 3, differential.methodPropFault(), 1e-12);
         assertEquals(0, differential.propMapAllFault(), 1e-12);
         assertEquals((2 + 2 + 0 + 1) / 4.0, differential.avgMapFault(), 1e-12);

@@ -7,7 +7,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
-import sitcov.experiment.FaultCalibration.MapVerdicts;
+import sitcov.experiment.JudgedMap;
 import sitcov.experiment.FaultVerdict;
 import sitcov.experiment.Proportion;
 import sitcov.faults.Fault;
@@ -19,9 +19,9 @@ final class FaultCalibrationTable {
     private final long first;
     private final int maps;
     private final Set<Fault> faults;
-    private final List<MapVerdicts> results;
+    private final List<JudgedMap> results;
 
-    FaultCalibrationTable(long first, int maps, Set<Fault> faults, List<MapVerdicts> results) {
+    FaultCalibrationTable(long first, int maps, Set<Fault> faults, List<JudgedMap> results) {
         this.first = first;
         this.maps = maps;
         this.faults = faults;
@@ -55,7 +55,7 @@ final class FaultCalibrationTable {
         int paper = 0;
         long example = -1;
         Map<AccidentType, Integer> by = new EnumMap<>(AccidentType.class);
-        for (MapVerdicts m : results) {
+        for (JudgedMap m : results) {
             FaultVerdict v = m.verdicts().get(column);
             reached += v.activation().reached() ? 1 : 0;
             effective += v.activation().effective() ? 1 : 0;

@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
+import sitcov.experiment.Drivers;
 
 /**
  * The sitcov command line. {@link #main} is a thin shell over {@link #run}, which tests call
@@ -26,7 +27,8 @@ public final class Main {
     /** The commands of this version of sitcov, in the order help lists them. */
     static Main standard() {
         return new Main(List.of(
-                new RunCommand(),
+                new RunCommand(Drivers.standard()),
+                new MergeCommand(),
                 new SimulateCommand(),
                 new MapCommand(),
                 new CoverageCommand(),

@@ -11,6 +11,7 @@ import java.util.Properties;
 import java.util.Set;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.BudgetKind;
+import sitcov.experiment.Drivers;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.faults.FaultSet;
 
@@ -18,9 +19,9 @@ import sitcov.faults.FaultSet;
  * An experiment preset: a properties file in {@code experiments/}, named by file or by name. A
  * preset with {@code sweep=} budgets is an effort sweep; otherwise it is a comparison.
  */
-record Preset(Path file, ExperimentConfig config, List<Integer> sweep) {
+record Preset(Path file, ExperimentConfig config) {
     private static final Set<String> KEYS = Set.of("name", "master_seed", "candidates", "replications", "faults", "budget",
-            "grid", "description", "sweep");
+            "grid", "description", "sweep", "drivers", "candidate_limit");
 
     static Path locate(String nameOrFile) throws UsageException {
         Path direct = Path.of(nameOrFile);
@@ -35,37 +36,74 @@ record Preset(Path file, ExperimentConfig config, List<Integer> sweep) {
                 + ".properties; the presets are the .properties files in experiments/ (e.g. smoke, paper-rq1).");
     }
 
-    static Preset read(Path file, Long masterSeedOverride) throws UsageException {
+    static Preset read(Path file, Long masterSeedOverride, Drivers drivers) throws UsageException {
         Properties p = new Properties();
         try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             p.load(r);
         } catch (IOException e) {
             throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage());
         }
-        return new Preset(file, config(p, file, masterSeedOverride), sweep(p, file));
+        return new Preset(file, config(p, file, masterSeedOverride, drivers));
     }
 
-    private static ExperimentConfig config(Properties p, Path file, Long masterSeedOverride) throws UsageException {
+    private static ExperimentConfig config(Properties p, Path file, Long masterSeedOverride, Drivers known)
+            throws UsageException {
         for (String key : p.stringPropertyNames()) {
             if (!KEYS.contains(key)) {
-                throw new UsageException("run: " + file + ": unknown key '" + key + "'; the keys are " + KEYS + ".");
+                throw new UsageException("run: " + file + ": unknown key '" + key + "'; the keys are "
+                        + KEYS.stream().sorted().toList() + ".");
             }
         }
-        String name = p.getProperty("name", file.getFileName().toString().replaceFirst("\\.properties$", ""));
+        String name = p.getProperty("name", file.getFileName().toString().replaceFirst("\\.properties$", "")).strip();
+        if (!name.matches("[A-Za-z0-9][A-Za-z0-9._-]*")) {
+            throw new UsageException("run: " + file + ": name=" + name + " must be letters, digits, '.', '_' and '-'"
+                    + " (it names the results folder).");
+        }
+        String field = "master_seed";
         try {
             long seed = masterSeedOverride != null ? masterSeedOverride : Long.parseLong(required(p, "master_seed", file));
+            field = "candidates";
             int candidates = Integer.parseInt(required(p, "candidates", file));
+            field = "replications";
             int replications = Integer.parseInt(p.getProperty("replications", "1").strip());
+            field = "faults";
             var faults = FaultSet.parse(p.getProperty("faults", "PAPER"));
+            field = "budget";
             BudgetKind budget = BudgetKind.ofKey(p.getProperty("budget", "ticks").strip());
+            field = "drivers";
+            List<String> drivers = drivers(p, file, known);
+            field = "sweep";
+            List<Integer> sweep = sweep(p, file);
+            field = "candidate_limit";
+            String limit = p.getProperty("candidate_limit");
+            int candidateLimit = limit == null ? ExperimentConfig.defaultCandidateLimit(candidates, sweep)
+                    : Integer.parseInt(limit.strip());
+            field = "grid";
             String gridFile = p.getProperty("grid");
             GridDefinition grid = gridFile == null ? GridDefinition.paper() : GridDefinition.read(Path.of(gridFile.strip()));
-            return new ExperimentConfig(name, seed, candidates, replications, faults, budget, grid);
+            return new ExperimentConfig(name, seed, candidates, replications, faults, budget, grid, drivers, sweep,
+                    candidateLimit);
         } catch (IOException e) {
             throw new UsageException("run: " + file + ": cannot read its grid: " + e.getMessage());
+        } catch (NumberFormatException e) {
+            throw new UsageException("run: " + file + ": " + field + "= needs a whole number, not '"
+                    + p.getProperty(field, "").strip() + "'.");
         } catch (IllegalArgumentException e) {
-            throw new UsageException("run: " + file + ": " + e.getMessage());
+            throw new UsageException("run: " + file + ": " + e.getMessage() + ".");
         }
+    }
+
+    private static List<String> drivers(Properties p, Path file, Drivers known) throws UsageException {
+        List<String> drivers = new ArrayList<>();
+        for (String part : p.getProperty("drivers", String.join(",", ExperimentConfig.PAPER_DRIVERS)).split(",")) {
+            String d = part.strip();
+            if (!known.has(d)) {
+                throw new UsageException("run: " + file + ": drivers= names an unknown driver '" + d + "'; the drivers are "
+                        + String.join(", ", known.names()) + ".");
+            }
+            drivers.add(d);
+        }
+        return drivers;
     }
 
     /** The candidate budgets of an effort sweep ({@code sweep=200,500,...}), or an empty list for a comparison. */

@@ -75,6 +75,19 @@ public record GridDefinition(List<Criterion> criteria, List<Bins> bins) {
         return rest % bins.get(criterion).count();
     }
 
+    /** The definition as a grid file: reading it back gives the same grid, and equal grids give equal text. */
+    public String format() {
+        StringBuilder out = new StringBuilder(HEADER).append('\n');
+        for (int i = 0; i < criteria.size(); i++) {
+            out.append("criterion ").append(criteria.get(i).key());
+            for (double e : bins.get(i).edges()) {
+                out.append(' ').append(e == Double.POSITIVE_INFINITY ? "inf" : Double.toString(e));
+            }
+            out.append('\n');
+        }
+        return out.toString();
+    }
+
     public static GridDefinition read(Path file) throws IOException {
         return parse(Files.readAllLines(file), file.toString());
     }

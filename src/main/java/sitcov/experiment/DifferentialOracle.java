@@ -1,13 +1,11 @@
 package sitcov.experiment;
 
-import java.util.EnumSet;
 import java.util.List;
 import sitcov.faults.Activation;
 import sitcov.faults.Fault;
 import sitcov.oracle.Accident;
 import sitcov.oracle.NewAccidents;
 import sitcov.oracle.RunResult;
-import sitcov.world.WorldMap;
 
 /**
  * A fault counts as found on a map only when it causes an accident that the fault-free run of the
@@ -15,12 +13,6 @@ import sitcov.world.WorldMap;
  */
 public final class DifferentialOracle {
     private DifferentialOracle() {
-    }
-
-    /** Runs {@code map} fault-free and with {@code fault}, with the same internal seed, and judges. */
-    public static FaultVerdict judge(WorldMap map, long internalSeed, Fault fault) {
-        RunResult faultFree = Simulator.run(map, internalSeed);
-        return judge(faultFree, Simulator.run(map, internalSeed, EnumSet.of(fault), RunObserver.NONE), fault);
     }
 
     /** Judges {@code fault} from a faulty run and the fault-free run of the same seeds. */

@@ -1,19 +1,90 @@
 package sitcov.experiment;
 
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
 import java.util.Set;
 import sitcov.coverage.GridDefinition;
 import sitcov.faults.Fault;
 
 /**
- * One comparison experiment: the coverage-filter driver looks at {@code candidates} candidate maps
- * per replication; the random driver then gets the same budget of the given kind.
+ * One experiment. A comparison: per replication, the first of {@code drivers} draws
+ * {@code candidates} candidates; each later driver gets the same budget of the given kind (and never
+ * draws more than {@code candidateLimit}). A sweep ({@code sweep} not empty): the same, once per
+ * candidate budget of the sweep and map set, with {@code replications} map sets per budget.
  */
 public record ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
-                               BudgetKind budget, GridDefinition grid) {
+                               BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
+                               int candidateLimit) {
+    public static final List<String> PAPER_DRIVERS = List.of("coverage-filter", "random");
+
     public ExperimentConfig {
         if (candidates < 1 || replications < 1) {
             throw new IllegalArgumentException("an experiment needs at least one candidate and one replication");
         }
+        if (drivers.isEmpty() || drivers.stream().distinct().count() != drivers.size()) {
+            throw new IllegalArgumentException("an experiment names one or more drivers, each once, got " + drivers);
+        }
+        if (sweep.stream().anyMatch(b -> b < 1)) {
+            throw new IllegalArgumentException("sweep budgets are positive candidate counts, got " + sweep);
+        }
+        int largest = sweep.stream().mapToInt(Integer::intValue).max().orElse(candidates);
+        if (candidateLimit < largest) {
+            throw new IllegalArgumentException("candidate_limit " + candidateLimit + " is below the first driver's "
+                    + largest + " candidates");
+        }
         faults = Set.copyOf(faults);
+        drivers = List.copyOf(drivers);
+        sweep = List.copyOf(sweep);
+    }
+
+    /** The paper's two drivers, no sweep, and a candidate limit ten times the first driver's candidates. */
+    public ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
+                            BudgetKind budget, GridDefinition grid) {
+        this(name, masterSeed, candidates, replications, faults, budget, grid, PAPER_DRIVERS, List.of(),
+                defaultCandidateLimit(candidates, List.of()));
+    }
+
+    /** Ten times the largest candidate budget of the first driver: later drivers that run few maps still stop. */
+    public static int defaultCandidateLimit(int candidates, List<Integer> sweep) {
+        long largest = sweep.stream().mapToInt(Integer::intValue).max().orElse(candidates);
+        return (int) Math.min(Integer.MAX_VALUE, largest * 10L);
+    }
+
+    /** The faults of the set in id order: the order of every per-fault column. */
+    public List<Fault> faultList() {
+        return List.copyOf(faults.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(faults));
+    }
+
+    public boolean isSweep() {
+        return !sweep.isEmpty();
+    }
+
+    /**
+     * Every replication the experiment runs, in order: for a comparison one per replication; for a
+     * sweep one per (budget, map set), budgets in the preset's order, map sets inside.
+     */
+    public List<PlannedReplication> plan() {
+        List<PlannedReplication> plan = new ArrayList<>();
+        if (!isSweep()) {
+            for (int r = 0; r < replications; r++) {
+                plan.add(new PlannedReplication(r, SeedPlan.replicationLabel(r), candidates, 0, r));
+            }
+            return plan;
+        }
+        for (int budget : sweep) {
+            for (int set = 0; set < replications; set++) {
+                plan.add(new PlannedReplication(plan.size(), SeedPlan.sweepLabel(budget, set), budget, budget, set));
+            }
+        }
+        return plan;
+    }
+
+    public int driverIndex(String driver) {
+        int i = drivers.indexOf(driver);
+        if (i < 0) {
+            throw new IllegalArgumentException("driver '" + driver + "' is not one of this experiment's " + drivers);
+        }
+        return i;
     }
 }

@@ -1,26 +1,26 @@
 package sitcov.experiment;
 
 import java.util.List;
-import sitcov.oracle.RunResult;
 
 /**
- * One map a driver ran: where it came from (method, replication, candidate index), its seeds, its
- * coverage cell and criteria values, the fault-free run and the verdict on every fault of the set.
+ * One map a driver ran in one replication, as the results folder keeps it: which driver, its
+ * {@code mapIndex}-th map, drawn as candidate {@code candidate} of the replication's stream (-1 for
+ * a built situation), the map, both seeds, its cell and criteria, the fault-free run and every fault's outcome.
  */
-public record MapRun(Method method, int replication, int candidate, long externalSeed, long internalSeed, int cell,
-                     double[] criteria, RunResult faultFree, List<FaultVerdict> verdicts, long ticks) {
+public record MapRun(int replication, String driver, int mapIndex, int candidate, MapId map, long externalSeed,
+                     long internalSeed, int cell, List<Double> criteria, RunSummary faultFree, List<FaultOutcome> faults) {
     public MapRun {
-        criteria = criteria.clone();
-        verdicts = List.copyOf(verdicts);
+        criteria = List.copyOf(criteria);
+        faults = List.copyOf(faults);
     }
 
-    @Override
-    public double[] criteria() {
-        return criteria.clone();
+    /** Simulated ticks this map cost: the fault-free run and every faulty run. */
+    public long ticks() {
+        return faultFree.ticks() + faults.stream().mapToLong(f -> f.run().ticks()).sum();
     }
 
     /** Faults found on this map, by the differential oracle or by the paper's notion. */
     public long faultsFound(boolean paperNotion) {
-        return verdicts.stream().filter(v -> paperNotion ? v.foundByPaperNotion() : v.detection().found()).count();
+        return faults.stream().filter(f -> f.found(paperNotion)).count();
     }
 }

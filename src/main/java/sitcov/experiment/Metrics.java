@@ -28,11 +28,11 @@ public record Metrics(int maps, int cells, double methodPropFault, double propMa
         for (MapRun run : runs) {
             int onMap = 0;
             for (int f = 0; f < k; f++) {
-                FaultVerdict v = run.verdicts().get(f);
+                FaultOutcome v = run.faults().get(f);
                 if (v.fault() != faults.get(f)) {
-                    throw new IllegalArgumentException("verdicts of map " + run.externalSeed() + " are not in fault order");
+                    throw new IllegalArgumentException("faults of map " + run.map().text() + " are not in fault order");
                 }
-                boolean hit = paperNotion ? v.foundByPaperNotion() : v.detection().found();
+                boolean hit = v.found(paperNotion);
                 if (hit) {
                     found[f]++;
                     onMap++;

@@ -2,19 +2,14 @@ package sitcov.experiment;
 
 import java.util.List;
 
-/**
- * Everything one replication produced: the maps each driver ran (in order), the coverage curve,
- * and the wall time each map took (kept apart: timings never reach the reproducible results).
- */
-public record ReplicationResult(int replication, List<MapRun> runs, List<CurvePoint> curve, List<Long> mapNanos,
-                                long coverageNanos, long randomNanos, int randomCandidates) {
+/** Every driver's share of one replication (or one map set of a sweep), in the preset's driver order. */
+public record ReplicationResult(int replication, List<DriverRun> drivers) {
     public ReplicationResult {
-        runs = List.copyOf(runs);
-        curve = List.copyOf(curve);
-        mapNanos = List.copyOf(mapNanos);
+        drivers = List.copyOf(drivers);
     }
 
-    public List<MapRun> runsOf(Method method) {
-        return runs.stream().filter(r -> r.method() == method).toList();
+    public DriverRun of(String driver) {
+        return drivers.stream().filter(d -> d.driver().equals(driver)).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("no driver '" + driver + "' in replication " + replication));
     }
 }

@@ -2,46 +2,36 @@ package sitcov.experiment;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.Callable;
-import java.util.function.IntConsumer;
-import java.util.function.LongSupplier;
-import sitcov.faults.Fault;
 
 /**
- * The paper's effort sweep (Fig. 4): the coverage-filter driver alone at several candidate budgets,
- * several map sets each (the config's replications); for each set, the coverage it reached and the
- * faults its maps found. Map set {@code s} at budget {@code c} draws from replication stream
- * {@code c * 1000 + s}, so sets differ and every point is reproducible from the master seed.
+ * The paper's effort sweep (Fig. 4): each driver at several candidate budgets, several map sets
+ * each; for each set, the coverage it reached and the faults its maps found.
  */
 public final class Sweep {
     private Sweep() {
     }
 
-    /** One map set of the sweep: its budget, coverage, and faults found under both notions. */
-    public record Point(int candidates, int set, int maps, int cells, int faultsFound, int faultsFoundPaper,
-                        double avgMapFault, double avgMapFaultPaper) {
+    /** One map set of one driver at one budget: its coverage and faults found under both notions. */
+    public record Point(int candidates, int set, String driver, int maps, int cells, int faultsFound,
+                        int faultsFoundPaper, double avgMapFault, double avgMapFaultPaper) {
     }
 
-    public static List<Point> run(ExperimentConfig config, List<Integer> budgets, int threads, LongSupplier nanoClock,
-                                  IntConsumer done) {
-        List<Fault> faults = config.faults().stream().sorted().toList();
-        List<Callable<Point>> tasks = new ArrayList<>();
-        for (int budget : budgets) {
-            for (int set = 0; set < config.replications(); set++) {
-                int s = set;
-                ExperimentConfig c = new ExperimentConfig(config.name(), config.masterSeed(), budget, config.replications(),
-                        config.faults(), config.budget(), config.grid());
-                tasks.add(() -> {
-                    ReplicationResult r = new Replication(c, budget * 1000 + s, nanoClock).runCoverageOnly();
-                    List<MapRun> runs = r.runsOf(Method.COVERAGE_FILTER);
-                    Metrics d = Metrics.of(runs, faults, false);
-                    Metrics p = Metrics.of(runs, faults, true);
-                    return new Point(budget, s, runs.size(), d.cells(), (int) Math.round(d.methodPropFault() * faults.size()),
-                            (int) Math.round(p.methodPropFault() * faults.size()), d.avgMapFault(), p.avgMapFault());
-                });
+    /** The points of a sweep's results, in plan order, drivers in the preset's order within a set. */
+    public static List<Point> points(ExperimentConfig config, Summary summary) {
+        List<PlannedReplication> plan = config.plan();
+        int k = config.faultList().size();
+        List<Point> points = new ArrayList<>();
+        for (ReplicationResult r : summary.results()) {
+            PlannedReplication p = plan.get(r.replication());
+            for (DriverRun d : r.drivers()) {
+                Metrics m = summary.metrics(r.replication(), d.driver(), false);
+                Metrics q = summary.metrics(r.replication(), d.driver(), true);
+                points.add(new Point(p.sweepBudget(), p.set(), d.driver(), m.maps(), m.cells(),
+                        (int) Math.round(m.methodPropFault() * k), (int) Math.round(q.methodPropFault() * k),
+                        m.avgMapFault(), q.avgMapFault()));
             }
         }
-        return InOrder.run(tasks, threads, done, "sweep " + config.name());
+        return points;
     }
 
     /** Least-squares line y = a + b·x and its r², as {a, b, r²}. */

@@ -11,6 +11,9 @@ import java.util.Locale;
 final class Chart {
     static final Color COVERAGE = new Color(31, 119, 180);
     static final Color RANDOM = new Color(255, 127, 14);
+    /** One colour per driver, in the preset's order; the paper's two keep their colours. */
+    private static final Color[] DRIVERS = {COVERAGE, RANDOM, new Color(44, 160, 44), new Color(214, 39, 40),
+        new Color(148, 103, 189), new Color(140, 86, 75), new Color(227, 119, 194), new Color(127, 127, 127)};
 
     private final Graphics2D g;
     private final int left;
@@ -120,6 +123,18 @@ final class Chart {
             g.setColor(Color.BLACK);
             g.drawString(labels[i], x + 20, y + i * 18);
         }
+    }
+
+    static Color driver(int index) {
+        return DRIVERS[index % DRIVERS.length];
+    }
+
+    static Color[] drivers(int count) {
+        Color[] colours = new Color[count];
+        for (int i = 0; i < count; i++) {
+            colours[i] = driver(i);
+        }
+        return colours;
     }
 
     static String number(double v) {

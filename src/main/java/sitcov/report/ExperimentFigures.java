@@ -9,100 +9,153 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.ToDoubleFunction;
 import sitcov.experiment.CurvePoint;
+import sitcov.experiment.DriverRun;
 import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.Journal;
 import sitcov.experiment.MapRun;
-import sitcov.experiment.Method;
 import sitcov.experiment.ReplicationResult;
+import sitcov.experiment.Summary;
 
 /**
- * The paper's figures for a comparison experiment: faults found per map by method (Fig. 2, under
- * both detection notions) and coverage against candidates and against time (Fig. 3).
+ * The paper's figures for a comparison of any number of drivers: faults found per map (Fig. 2,
+ * under both detection notions), coverage against candidates and simulated ticks (Fig. 3, the same
+ * for every run of the experiment) and against wall-clock time (Fig. 3 as the paper drew it; timed).
  */
-public final class ExperimentFigures {
+final class ExperimentFigures {
     private ExperimentFigures() {
     }
 
-    public static void writeAll(ExperimentConfig config, List<ReplicationResult> results, Path folder) throws IOException {
-        MapRenderer.writeAtomically(faultsPerMap(config, results), folder.resolve("fig2-faults-per-map.png"));
-        MapRenderer.writeAtomically(coverage(config, results), folder.resolve("fig3-coverage.png"));
+    static void writeAll(ExperimentConfig config, Summary summary, Journal journal, Path folder) throws IOException {
+        MapRenderer.writeAtomically(faultsPerMap(config, summary), folder.resolve(ResultsFolder.FIG2));
+        MapRenderer.writeAtomically(coverage(config, summary), folder.resolve(ResultsFolder.FIG3));
+        MapRenderer.writeAtomically(coverageOverTime(config, summary, journal), folder.resolve(ResultsFolder.FIG3_TIME));
     }
 
-    static BufferedImage faultsPerMap(ExperimentConfig config, List<ReplicationResult> results) {
+    static BufferedImage faultsPerMap(ExperimentConfig config, Summary summary) {
         int k = config.faults().size();
+        List<String> drivers = config.drivers();
+        int n = drivers.size();
         BufferedImage image = canvas(1000, 420);
         Graphics2D g = graphics(image);
-        title(g, "Faults found per map, by method (" + config.name() + ", master seed " + config.masterSeed() + ", "
-                + results.size() + " replications)");
+        title(g, "Faults found per map, by driver (" + config.name() + ", master seed " + config.masterSeed() + ", "
+                + summary.results().size() + " replications)");
         String[] notions = {"differential oracle (new accident)", "paper's notion (any accident)"};
-        for (int n = 0; n < 2; n++) {
-            double[][] share = new double[2][k + 1];
+        for (int notion = 0; notion < 2; notion++) {
+            double[][] share = new double[n][k + 1];
             double top = 0;
-            for (Method m : Method.values()) {
-                List<MapRun> runs = results.stream().flatMap(r -> r.runsOf(m).stream()).toList();
+            for (int d = 0; d < n; d++) {
+                String driver = drivers.get(d);
+                List<MapRun> runs = summary.results().stream().flatMap(r -> r.of(driver).maps().stream()).toList();
                 for (MapRun run : runs) {
-                    share[m.ordinal()][(int) run.faultsFound(n == 1)] += 1.0 / Math.max(1, runs.size());
+                    share[d][(int) run.faultsFound(notion == 1)] += 1.0 / Math.max(1, runs.size());
                 }
-                for (double s : share[m.ordinal()]) {
+                for (double s : share[d]) {
                     top = Math.max(top, s);
                 }
             }
-            Chart chart = new Chart(g, 80 + n * 480, 80, 380, 260, k + 1, Math.min(1, Math.ceil(top * 10) / 10), k + 1);
-            chart.axes(notions[n], "faults found on the map (of " + k + ")", "share of maps");
+            Chart chart = new Chart(g, 80 + notion * 480, 80, 380, 260, k + 1, Math.min(1, Math.ceil(top * 10) / 10), k + 1);
+            chart.axes(notions[notion], "faults found on the map (of " + k + ")", "share of maps");
+            double width = 0.8 / n;
             for (int f = 0; f <= k; f++) {
-                chart.bar(f + 0.1, 0.4, share[0][f], Chart.COVERAGE);
-                chart.bar(f + 0.5, 0.4, share[1][f], Chart.RANDOM);
+                for (int d = 0; d < n; d++) {
+                    chart.bar(f + 0.1 + d * width, width, share[d][f], Chart.driver(d));
+                }
             }
-            if (n == 1) {
-                chart.legend(80 + n * 480 + 240, 100, new String[] {"coverage-filter", "random"},
-                        new Color[] {Chart.COVERAGE, Chart.RANDOM});
+            if (notion == 1) {
+                chart.legend(80 + notion * 480 + 240, 100, drivers.toArray(String[]::new), Chart.drivers(n));
             }
         }
+        g.setColor(Color.BLACK);
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
-        g.drawString("x = number of faults found on a map; bar i spans [i, i+1)", 80, 395);
+        g.drawString("x = number of faults found on a map; bar i spans [i, i+1), one bar per driver", 80, 395);
         g.dispose();
         return image;
     }
 
-    static BufferedImage coverage(ExperimentConfig config, List<ReplicationResult> results) {
+    static BufferedImage coverage(ExperimentConfig config, Summary summary) {
         BufferedImage image = canvas(1000, 420);
         Graphics2D g = graphics(image);
         title(g, String.format(Locale.ROOT, "Situation coverage (cells of %d) against effort (%s, %d replications)",
-                config.grid().cells(), config.name(), results.size()));
-        double maxCandidates = 0;
-        double maxSeconds = 0;
-        double maxCells = 0;
-        for (ReplicationResult r : results) {
-            for (CurvePoint p : r.curve()) {
-                maxCandidates = Math.max(maxCandidates, p.candidates());
-                maxSeconds = Math.max(maxSeconds, p.seconds());
-                maxCells = Math.max(maxCells, p.cellsCovered());
-            }
-        }
-        double yMax = maxCells;
-        Chart byCandidates = new Chart(g, 80, 80, 380, 260, maxCandidates, yMax);
-        byCandidates.axes("against candidate maps drawn", "candidates", "cells covered");
-        Chart bySeconds = new Chart(g, 560, 80, 380, 260, maxSeconds, yMax);
-        bySeconds.axes("against wall-clock time", "seconds", "cells covered");
-        for (ReplicationResult r : results) {
-            for (Method m : Method.values()) {
-                List<CurvePoint> pts = r.curve().stream().filter(p -> p.method() == m).toList();
-                double[] c = pts.stream().mapToDouble(CurvePoint::candidates).toArray();
-                double[] s = pts.stream().mapToDouble(CurvePoint::seconds).toArray();
-                double[] y = pts.stream().mapToDouble(CurvePoint::cellsCovered).toArray();
-                Color colour = m == Method.COVERAGE_FILTER ? Chart.COVERAGE : Chart.RANDOM;
-                byCandidates.line(c, y, colour, 1.5f);
-                bySeconds.line(s, y, colour, 1.5f);
-            }
-        }
-        bySeconds.legend(560 + 230, 300, new String[] {"coverage-filter", "random"},
-                new Color[] {Chart.COVERAGE, Chart.RANDOM});
-        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
-        g.setColor(Color.BLACK);
-        g.drawString("one line per method and replication; the random driver runs every candidate, so it draws far fewer",
-                80, 395);
+                config.grid().cells(), config.name(), summary.results().size()));
+        curves(g, config, summary, 80, "against candidate maps drawn", "candidates", p -> p.candidates());
+        curves(g, config, summary, 560, "against simulated ticks", "ticks (fault-free and faulty runs)", p -> p.ticks());
+        note(g, "one line per driver and replication; a driver that runs every candidate draws far fewer");
         g.dispose();
         return image;
+    }
+
+    private static void curves(Graphics2D g, ExperimentConfig config, Summary summary, int left, String title,
+                               String xLabel, ToDoubleFunction<CurvePoint> x) {
+        double maxX = 0;
+        double maxY = 0;
+        for (ReplicationResult r : summary.results()) {
+            for (DriverRun d : r.drivers()) {
+                for (CurvePoint p : CurvePoint.of(r.replication(), d)) {
+                    maxX = Math.max(maxX, x.applyAsDouble(p));
+                    maxY = Math.max(maxY, p.cellsCovered());
+                }
+            }
+        }
+        Chart chart = new Chart(g, left, 80, 380, 260, maxX, maxY);
+        chart.axes(title, xLabel, "cells covered");
+        for (ReplicationResult r : summary.results()) {
+            for (DriverRun d : r.drivers()) {
+                List<CurvePoint> pts = CurvePoint.of(r.replication(), d);
+                chart.line(pts.stream().mapToDouble(x).toArray(), pts.stream().mapToDouble(CurvePoint::cellsCovered).toArray(),
+                        Chart.driver(config.driverIndex(d.driver())), 1.5f);
+            }
+        }
+        if (left > 80) {
+            chart.legend(left + 230, 300 - 18 * (config.drivers().size() - 2), config.drivers().toArray(String[]::new),
+                    Chart.drivers(config.drivers().size()));
+        }
+    }
+
+    /** Coverage against each driver's own wall-clock time, read from the journal's timings. */
+    static BufferedImage coverageOverTime(ExperimentConfig config, Summary summary, Journal journal) {
+        BufferedImage image = canvas(560, 420);
+        Graphics2D g = graphics(image);
+        title(g, "Situation coverage against wall-clock time (" + config.name() + ")");
+        double maxX = 0;
+        double maxY = 0;
+        for (Journal.Finished f : journal.finished()) {
+            maxX = Math.max(maxX, f.driverNanos() / 1e9);
+            maxY = Math.max(maxY, f.spend().cellsCovered());
+        }
+        Chart chart = new Chart(g, 80, 80, 420, 260, maxX, maxY);
+        chart.axes("cells covered against seconds the driver ran", "seconds", "cells covered");
+        for (ReplicationResult r : summary.results()) {
+            for (DriverRun d : r.drivers()) {
+                List<Journal.Entry> entries = journal.maps(r.replication(), d.driver());
+                double[] xs = new double[entries.size() + 1];
+                double[] ys = new double[entries.size() + 1];
+                java.util.Set<Integer> cells = new java.util.HashSet<>();
+                for (int i = 0; i < entries.size(); i++) {
+                    int cell = entries.get(i).run().cell();
+                    if (cell >= 0) {
+                        cells.add(cell);
+                    }
+                    xs[i] = entries.get(i).driverNanos() / 1e9;
+                    ys[i] = cells.size();
+                }
+                xs[entries.size()] = journal.finished(r.replication(), d.driver()).map(f -> f.driverNanos() / 1e9).orElse(0.0);
+                ys[entries.size()] = cells.size();
+                chart.line(xs, ys, Chart.driver(config.driverIndex(d.driver())), 1.5f);
+            }
+        }
+        chart.legend(80 + 290, 300 - 18 * (config.drivers().size() - 2), config.drivers().toArray(String[]::new),
+                Chart.drivers(config.drivers().size()));
+        note(g, "timed: differs from run to run; the paper's budget gives every driver the first one's time");
+        g.dispose();
+        return image;
+    }
+
+    private static void note(Graphics2D g, String text) {
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+        g.setColor(Color.BLACK);
+        g.drawString(text, 80, 395);
     }
 
     private static BufferedImage canvas(int w, int h) {

@@ -118,8 +118,7 @@ public final class MapRenderer {
     /** Writes {@code image} as a PNG to a temporary file beside {@code file}, then moves it into place. */
     static void writeAtomically(BufferedImage image, Path file) throws IOException {
         Path target = file.toAbsolutePath();
-        Path folder = target.getParent();
-        Path temp = Files.createTempFile(folder, "." + target.getFileName(), ".tmp");
+        Path temp = AtomicFiles.temporary(target);
         try {
             if (!ImageIO.write(image, "png", temp.toFile())) {
                 throw new IOException("no PNG writer available to write " + file);

@@ -10,37 +10,26 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
-import java.util.TreeMap;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.Sweep;
-import sitcov.faults.FaultSet;
+import sitcov.experiment.Summary;
 
 /** The effort sweep's results: {@code sweep.csv}, {@code manifest.properties} and Fig. 4 (faults found against coverage, with the regression line and r²). */
-public final class SweepReport {
+final class SweepReport {
     private SweepReport() {
     }
 
-    public static void write(ExperimentConfig config, List<Sweep.Point> points, Path folder, Map<String, String> extras)
-            throws IOException {
+    static void write(ExperimentConfig config, Summary summary, Path folder) throws IOException {
+        List<Sweep.Point> points = Sweep.points(config, summary);
         List<String> rows = new ArrayList<>();
-        rows.add("candidates,map_set,maps_run,cells_covered,faults_found,faults_found_paper,avg_map_fault,avg_map_fault_paper");
+        rows.add("candidates,map_set,driver,maps_run,cells_covered,faults_found,faults_found_paper,avg_map_fault,"
+                + "avg_map_fault_paper");
         for (Sweep.Point p : points) {
-            rows.add(String.format(Locale.ROOT, "%d,%d,%d,%d,%d,%d,%.4f,%.4f", p.candidates(), p.set(), p.maps(), p.cells(),
-                    p.faultsFound(), p.faultsFoundPaper(), p.avgMapFault(), p.avgMapFaultPaper()));
+            rows.add(String.format(Locale.ROOT, "%d,%d,%s,%d,%d,%d,%d,%.4f,%.4f", p.candidates(), p.set(), p.driver(),
+                    p.maps(), p.cells(), p.faultsFound(), p.faultsFoundPaper(), p.avgMapFault(), p.avgMapFaultPaper()));
         }
-        lines(folder.resolve("sweep.csv"), rows);
-        Map<String, String> m = new TreeMap<>(extras);
-        m.put("preset", config.name());
-        m.put("master_seed", Long.toString(config.masterSeed()));
-        m.put("map_sets_per_budget", Integer.toString(config.replications()));
-        m.put("faults", FaultSet.format(config.faults()));
-        m.put("java_version", System.getProperty("java.version"));
-        List<String> manifest = new ArrayList<>();
-        manifest.add("# sitcov effort-sweep manifest");
-        m.forEach((k, v) -> manifest.add(k + "=" + v));
-        lines(folder.resolve("manifest.properties"), manifest);
-        MapRenderer.writeAtomically(figure(config, points), folder.resolve("fig4-faults-vs-coverage.png"));
+        AtomicFiles.writeLines(folder.resolve(ResultsFolder.SWEEP), rows);
+        MapRenderer.writeAtomically(figure(config, points), folder.resolve(ResultsFolder.FIG4));
     }
 
     static BufferedImage figure(ExperimentConfig config, List<Sweep.Point> points) {
@@ -52,8 +41,8 @@ public final class SweepReport {
         g.fillRect(0, 0, 1000, 440);
         g.setColor(Color.BLACK);
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 15));
-        g.drawString("Faults found per map against situation coverage: coverage-filter driver, " + points.size()
-                + " map sets (" + config.name() + ")", 20, 30);
+        g.drawString("Faults found per map against situation coverage: " + String.join(", ", config.drivers()) + ", "
+                + points.size() + " map sets (" + config.name() + ")", 20, 30);
         double[] x = points.stream().mapToDouble(Sweep.Point::cells).toArray();
         double maxX = points.stream().mapToDouble(Sweep.Point::cells).max().orElse(1);
         for (int panel = 0; panel < 2; panel++) {
@@ -71,7 +60,7 @@ public final class SweepReport {
             g.setStroke(new java.awt.BasicStroke(2f));
             g.drawLine(chart.px(0), chart.py(fit[0]), chart.px(maxX), chart.py(fit[0] + fit[1] * maxX));
             for (int i = 0; i < x.length; i++) {
-                g.setColor(Chart.COVERAGE);
+                g.setColor(Chart.driver(config.driverIndex(points.get(i).driver())));
                 g.fillOval(chart.px(x[i]) - 4, chart.py(y[i]) - 4, 8, 8);
             }
             g.setColor(Color.BLACK);
@@ -80,13 +69,10 @@ public final class SweepReport {
                     100 + panel * 480, 100);
         }
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
-        g.drawString("each dot: one map set of the coverage-filter driver at one candidate budget; red: least-squares line",
+        g.drawString("each dot: one map set of a driver at one candidate budget; red: least-squares line over all dots",
                 80, 410);
         g.dispose();
         return image;
     }
 
-    private static void lines(Path file, List<String> rows) throws IOException {
-        AtomicFiles.writeLines(file, rows);
-    }
 }

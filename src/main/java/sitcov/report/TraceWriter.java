@@ -33,7 +33,7 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
 
     public TraceWriter(Path file, long externalSeed, long internalSeed) throws IOException {
         this.target = file.toAbsolutePath();
-        this.temp = Files.createTempFile(target.getParent(), "." + target.getFileName(), ".tmp");
+        this.temp = AtomicFiles.temporary(target);
         this.seeds = externalSeed + "," + internalSeed + ",";
         try {
             this.out = Files.newBufferedWriter(temp, StandardCharsets.UTF_8);

@@ -43,6 +43,10 @@ public final class SituationFile {
         Path absolute = file.toAbsolutePath();
         Path folder = absolute.getParent();
         Path temp = Files.createTempFile(folder, "." + absolute.getFileName(), ".tmp");
+        if (Files.getFileStore(temp).supportsFileAttributeView("posix")) {
+            // a situation file is for sharing: readable by others, as a file a shell made would be
+            Files.setPosixFilePermissions(temp, java.nio.file.attribute.PosixFilePermissions.fromString("rw-r--r--"));
+        }
         try {
             Files.writeString(temp, format(map), StandardCharsets.UTF_8);
             Files.move(temp, absolute, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);

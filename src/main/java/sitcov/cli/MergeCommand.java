@@ -1,0 +1,59 @@
+package sitcov.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Set;
+import sitcov.experiment.Summary;
+import sitcov.report.Manifest;
+import sitcov.report.ShardMerger;
+
+/** {@code merge DIR... --out DIR}: the folders of shards 1/N … N/N into the folder the unsharded run would write. */
+final class MergeCommand implements Command {
+    @Override
+    public String name() {
+        return "merge";
+    }
+
+    @Override
+    public String synopsis() {
+        return "SHARD_DIR... --out DIR";
+    }
+
+    @Override
+    public String summary() {
+        return "combine the results folders of run --shard 1/N ... N/N into one, as the unsharded run would write it";
+    }
+
+    @Override
+    public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
+        Options options = Options.parse(name(), args, Set.of("--out"), Set.of());
+        if (options.positional().isEmpty()) {
+            throw new UsageException("merge: name the shard folders, e.g. 'merge results/shard-1 results/shard-2 --out results/all'.");
+        }
+        Path target = Path.of(options.value("--out").orElseThrow(() -> new UsageException(
+                "merge: say where the merged results go with --out DIR (a new or empty folder).")));
+        if (Files.isRegularFile(target) || (Files.isDirectory(target) && !RunCommand.isEmpty(target))) {
+            throw new UsageException("merge: --out " + target + " exists and is not an empty folder; name a new folder.");
+        }
+        List<Path> shards = options.positional().stream().map(Path::of).toList();
+        for (Path s : shards) {
+            if (!Files.isDirectory(s)) {
+                throw new UsageException("merge: " + s + " is not a folder; name the results folders of run --shard.");
+            }
+        }
+        try {
+            Summary summary = ShardMerger.merge(shards, target, RunCommand.execution(1));
+            SummaryTable.print(out, Manifest.read(target).config(), summary);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("merge: " + e.getMessage() + ".");
+        } catch (IOException e) {
+            err.println("sitcov: merge: could not write " + target + ": " + e.getMessage());
+            return ExitCode.FAILURE;
+        }
+        out.println("Merged " + shards.size() + " shards into " + target);
+        return ExitCode.OK;
+    }
+}

@@ -1,0 +1,14 @@
+package sitcov.experiment;
+
+/** The paper's random driver: every runnable candidate is run, in the order drawn. */
+final class RandomDriver implements Driver {
+    @Override
+    public void drive(DriverSession session) {
+        while (session.budgetLeft()) {
+            Candidate c = session.nextCandidate();
+            if (c.runnable()) {
+                session.run(c);
+            }
+        }
+    }
+}

@@ -1,0 +1,77 @@
+package sitcov.report;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import sitcov.experiment.DriverRun;
+import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.Journal;
+import sitcov.experiment.MapRun;
+import sitcov.experiment.PlannedReplication;
+import sitcov.experiment.ReplicationResult;
+import sitcov.experiment.Summary;
+
+/**
+ * Completes a results folder from its journal: the journal files in canonical order, then every
+ * table and figure, then the manifest marked complete. A fresh run, a resumed one and a merge of
+ * shards all end here, so they write the same files from the same journal.
+ */
+public final class ResultsFinisher {
+    private ResultsFinisher() {
+    }
+
+    /** The replications of the manifest's shard, rebuilt from the journal; refused if any driver has not finished. */
+    static List<ReplicationResult> results(Manifest manifest, Journal journal) {
+        ExperimentConfig config = manifest.config();
+        List<ReplicationResult> results = new ArrayList<>();
+        for (PlannedReplication p : config.plan()) {
+            if (!manifest.shard().includes(p.index())) {
+                continue;
+            }
+            List<DriverRun> drivers = new ArrayList<>();
+            for (String d : config.drivers()) {
+                Journal.Finished f = journal.finished(p.index(), d).orElseThrow(() -> new IllegalArgumentException(
+                        "driver " + d + " has not finished replication " + p.index()));
+                List<MapRun> maps = journal.maps(p.index(), d).stream().map(Journal.Entry::run).toList();
+                if (maps.size() != f.spend().mapsRun()) {
+                    throw new IllegalArgumentException("driver " + d + " ran " + f.spend().mapsRun() + " maps in replication "
+                            + p.index() + " but the journal holds " + maps.size());
+                }
+                drivers.add(new DriverRun(d, maps, f.spend()));
+            }
+            results.add(new ReplicationResult(p.index(), drivers));
+        }
+        return results;
+    }
+
+    /** Writes everything a complete folder holds; returns the summary the tables were made from. */
+    public static Summary finish(Path folder, Manifest manifest, Journal journal, Map<String, String> execution)
+            throws IOException {
+        ExperimentConfig config = manifest.config();
+        List<ReplicationResult> results = results(manifest, journal);
+        JournalFiles.write(folder, config, journal);
+        Summary summary = new Summary(config, results);
+        if (config.isSweep()) {
+            SweepReport.write(config, summary, folder);
+        } else {
+            ResultsTables tables = new ResultsTables(config, summary);
+            AtomicFiles.writeLines(folder.resolve(ResultsFolder.SUMMARY), tables.summary());
+            AtomicFiles.writeLines(folder.resolve(ResultsFolder.TABLE2), tables.table2());
+            AtomicFiles.writeLines(folder.resolve(ResultsFolder.COVERAGE_CURVE), tables.curve());
+            ExperimentFigures.writeAll(config, summary, journal, folder);
+        }
+        writeExecution(folder, execution);
+        manifest.complete(true).write(folder);
+        return summary;
+    }
+
+    static void writeExecution(Path folder, Map<String, String> execution) throws IOException {
+        List<String> rows = new ArrayList<>();
+        rows.add("# how this results folder was produced (not part of the results)");
+        new TreeMap<>(execution).forEach((k, v) -> rows.add(k + "=" + v));
+        AtomicFiles.writeLines(folder.resolve(ResultsFolder.EXECUTION), rows);
+    }
+}

@@ -1,0 +1,45 @@
+package sitcov.report;
+
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * The files of an experiment's results folder: the one place their names are written down. The
+ * journal files grow while the experiment runs; the rest are written when it ends. Under the ticks
+ * budget every file but the {@link #TIMED} ones is the same byte for byte however the run was
+ * split, interrupted or threaded.
+ */
+public final class ResultsFolder {
+    /** One row per simulated run, one block of rows per judged map. */
+    public static final String RUNS = "runs.csv";
+    /** What each driver spent in each replication, and why it stopped. */
+    public static final String DRIVERS = "drivers.csv";
+    /** Wall time per judged map and per driver: the only record of time, kept apart. */
+    public static final String TIMINGS = "timings.csv";
+    /** The experiment's exact configuration, sitcov's version, and whether the folder is complete. */
+    public static final String MANIFEST = "manifest.properties";
+    /** How this folder was produced: threads, wall time, JDK, resumes, shards. */
+    public static final String EXECUTION = "execution.properties";
+    /** The coverage grid definition the experiment used. */
+    public static final String GRID = "grid.txt";
+    /** Situation files of maps that drivers built (named in runs.csv as situation:NAME). */
+    public static final String SITUATIONS = "situations";
+    public static final String SUMMARY = "summary.csv";
+    public static final String TABLE2 = "table2.csv";
+    public static final String COVERAGE_CURVE = "coverage-curve.csv";
+    public static final String FIG2 = "fig2-faults-per-map.png";
+    public static final String FIG3 = "fig3-coverage.png";
+    public static final String FIG3_TIME = "fig3-coverage-time.png";
+    public static final String SWEEP = "sweep.csv";
+    public static final String FIG4 = "fig4-faults-vs-coverage.png";
+
+    /** Files whose content depends on how fast the machine was. */
+    public static final List<String> TIMED = List.of(TIMINGS, EXECUTION, FIG3_TIME);
+
+    private ResultsFolder() {
+    }
+
+    public static Path situation(Path folder, String name) {
+        return folder.resolve(SITUATIONS).resolve(name + ".situation");
+    }
+}

@@ -1,0 +1,116 @@
+package sitcov.report;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Locale;
+import java.util.Map;
+import java.util.function.LongSupplier;
+import sitcov.experiment.ExperimentEvent;
+import sitcov.experiment.ExperimentListener;
+import sitcov.experiment.Journal;
+import sitcov.experiment.Summary;
+
+/**
+ * The listener that keeps an experiment's results folder: it journals every judged map as it
+ * comes and, when the experiment ends, completes the folder ({@link ResultsFinisher}). Made for a
+ * fresh folder ({@link #create}) or for one a killed run left ({@link #resume}).
+ */
+public final class ResultsRecorder implements ExperimentListener {
+    private final Path folder;
+    private final Manifest manifest;
+    private final Journal journal;
+    private final Map<String, String> execution;
+    private final LongSupplier nanoClock;
+    private final long start;
+    private JournalWriter writer;
+    private Summary summary;
+
+    private ResultsRecorder(Path folder, Manifest manifest, Journal journal, Map<String, String> execution,
+                            LongSupplier nanoClock) throws IOException {
+        this.folder = folder;
+        this.manifest = manifest;
+        this.journal = journal;
+        this.execution = new LinkedHashMap<>(execution);
+        this.nanoClock = nanoClock;
+        this.start = nanoClock.getAsLong();
+        this.writer = new JournalWriter(folder, manifest.config());
+    }
+
+    /**
+     * Claims an empty (or new) folder: its manifest, marked incomplete, and empty journal files.
+     * {@code execution} holds what the folder's execution.properties should say (threads, JDK, ...).
+     */
+    public static ResultsRecorder create(Path folder, Manifest manifest, Map<String, String> execution,
+                                         LongSupplier nanoClock) throws IOException {
+        Files.createDirectories(folder);
+        manifest.complete(false).write(folder);
+        AtomicFiles.writeString(folder.resolve(ResultsFolder.RUNS), new RunsCsv(manifest.config()).header() + "\n");
+        AtomicFiles.writeString(folder.resolve(ResultsFolder.DRIVERS), DriversCsv.HEADER + "\n");
+        AtomicFiles.writeString(folder.resolve(ResultsFolder.TIMINGS), TimingsCsv.HEADER + "\n");
+        return new ResultsRecorder(folder, manifest, Journal.empty(), execution, nanoClock);
+    }
+
+    /**
+     * Takes up a folder a killed run left: keeps what its journal holds whole (rewritten without
+     * what the kill cut short) and continues it. The manifest says so when that changes the results.
+     */
+    public static ResultsRecorder resume(Path folder, Manifest manifest, Map<String, String> execution,
+                                         LongSupplier nanoClock) throws IOException {
+        Journal journal = JournalFiles.read(folder, manifest.config());
+        JournalFiles.write(folder, manifest.config(), journal);
+        Manifest resumed = manifest.resumedRun();
+        resumed.write(folder);
+        Map<String, String> facts = new LinkedHashMap<>(execution);
+        facts.put("resumed_with_maps", Integer.toString(journal.size()));
+        return new ResultsRecorder(folder, resumed, journal, facts, nanoClock);
+    }
+
+    /** What the folder already held: the runner replays it instead of simulating again. */
+    public Journal journal() {
+        return journal;
+    }
+
+    public Manifest manifest() {
+        return manifest;
+    }
+
+    /** The summary of the complete folder, once the experiment ended. */
+    public Summary summary() {
+        if (summary == null) {
+            throw new IllegalStateException("the experiment has not ended");
+        }
+        return summary;
+    }
+
+    @Override
+    public void on(ExperimentEvent event) {
+        writer.on(event);
+        if (event instanceof ExperimentEvent.Ended) {
+            try {
+                close();
+                execution.put("wall_seconds", String.format(Locale.ROOT, "%.1f", (nanoClock.getAsLong() - start) / 1e9));
+                summary = ResultsFinisher.finish(folder, manifest, JournalFiles.read(folder, manifest.config()), execution);
+            } catch (IOException e) {
+                throw new UncheckedIOException("could not complete the results in " + folder + ": " + e.getMessage(), e);
+            }
+        }
+    }
+
+    /** Closes the journal files (after a halt, or when done). */
+    public void close() throws IOException {
+        if (writer != null) {
+            writer.close();
+            writer = null;
+        }
+    }
+
+    /** Whether {@code folder} holds an experiment's manifest that is marked complete. */
+    public static boolean isComplete(Path folder) throws IOException {
+        Path m = folder.resolve(ResultsFolder.MANIFEST);
+        return Files.isRegularFile(m) && Files.readString(m, StandardCharsets.UTF_8).contains("\ncomplete=true\n");
+    }
+}

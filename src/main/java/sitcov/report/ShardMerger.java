@@ -1,0 +1,132 @@
+package sitcov.report;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.stream.Stream;
+import sitcov.experiment.DriverSpend;
+import sitcov.experiment.Journal;
+import sitcov.experiment.Summary;
+
+/**
+ * Combines the folders of shards 1/N … N/N of one experiment into the folder the unsharded run
+ * would have written. Refuses folders of different experiments (preset, seeds, drivers, budget,
+ * faults, grid, sitcov version), incomplete ones, and a set of shards with one missing or twice.
+ */
+public final class ShardMerger {
+    private ShardMerger() {
+    }
+
+    /** @throws IllegalArgumentException naming the folder and what is wrong with it */
+    public static Summary merge(List<Path> shards, Path out, Map<String, String> execution) throws IOException {
+        if (shards.isEmpty()) {
+            throw new IllegalArgumentException("name the shard folders to merge");
+        }
+        List<Manifest> manifests = new ArrayList<>();
+        for (Path shard : shards) {
+            manifests.add(Manifest.read(shard));
+        }
+        Manifest first = manifests.get(0);
+        int n = first.shard().n();
+        Path[] byK = new Path[n + 1];
+        boolean resumed = false;
+        for (int i = 0; i < shards.size(); i++) {
+            Manifest m = manifests.get(i);
+            Path folder = shards.get(i);
+            if (!m.identity().equals(first.identity())) {
+                throw new IllegalArgumentException(folder + " is not a shard of the same experiment as " + shards.get(0) + ": "
+                        + difference(first.identity(), m.identity()));
+            }
+            if (m.shard().isWhole()) {
+                throw new IllegalArgumentException(folder + " holds a whole run, not a shard; merge the folders of run --shard K/N");
+            }
+            if (m.shard().n() != n) {
+                throw new IllegalArgumentException(folder + " is shard " + m.shard() + " but " + shards.get(0) + " is shard "
+                        + first.shard() + ": merge shards of one split");
+            }
+            if (!m.complete()) {
+                throw new IllegalArgumentException(folder + " (shard " + m.shard() + ") is not complete; finish it with"
+                        + " run --resume " + folder);
+            }
+            if (byK[m.shard().k()] != null) {
+                throw new IllegalArgumentException("shard " + m.shard() + " is given twice: " + byK[m.shard().k()] + " and " + folder);
+            }
+            byK[m.shard().k()] = folder;
+            resumed |= m.resumed();
+        }
+        List<String> missing = new ArrayList<>();
+        for (int k = 1; k <= n; k++) {
+            if (byK[k] == null) {
+                missing.add(k + "/" + n);
+            }
+        }
+        if (!missing.isEmpty()) {
+            throw new IllegalArgumentException("shard" + (missing.size() > 1 ? "s " : " ") + String.join(", ", missing)
+                    + " missing: merge needs all " + n + " shards");
+        }
+        Journal journal = Journal.empty();
+        for (int k = 1; k <= n; k++) {
+            Journal part = JournalFiles.read(byK[k], first.config());
+            for (Journal.Entry e : part.entries().stream()
+                    .sorted(java.util.Comparator.comparingInt((Journal.Entry x) -> x.run().mapIndex())).toList()) {
+                checkShare(byK[k], k, n, e.run().replication());
+                journal.add(e);
+            }
+            for (Journal.Finished f : part.finished()) {
+                DriverSpend s = f.spend();
+                checkShare(byK[k], k, n, s.replication());
+                journal.add(f);
+            }
+        }
+        Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed);
+        Files.createDirectories(out);
+        merged.write(out);
+        for (int k = 1; k <= n; k++) {
+            copySituations(byK[k], out);
+        }
+        Map<String, String> facts = new TreeMap<>(execution);
+        facts.put("merged_shards", String.join(" ", Stream.of(byK).skip(1).map(Path::toString).toList()));
+        return ResultsFinisher.finish(out, merged, journal, facts);
+    }
+
+    private static void checkShare(Path folder, int k, int n, int replication) {
+        if (replication % n != k - 1) {
+            throw new IllegalArgumentException(folder + " (shard " + k + "/" + n + ") holds replication " + replication
+                    + ", which belongs to shard " + (replication % n + 1) + "/" + n);
+        }
+    }
+
+    private static String difference(Map<String, String> a, Map<String, String> b) {
+        List<String> diffs = new ArrayList<>();
+        for (String key : new TreeMap<>(a).keySet()) {
+            if (!a.get(key).equals(b.getOrDefault(key, ""))) {
+                diffs.add(key + " " + a.get(key) + " vs " + b.getOrDefault(key, "(none)"));
+            }
+        }
+        for (String key : b.keySet()) {
+            if (!a.containsKey(key)) {
+                diffs.add(key + " (none) vs " + b.get(key));
+            }
+        }
+        return String.join("; ", diffs);
+    }
+
+    private static void copySituations(Path shard, Path out) throws IOException {
+        Path from = shard.resolve(ResultsFolder.SITUATIONS);
+        if (!Files.isDirectory(from)) {
+            return;
+        }
+        Path to = out.resolve(ResultsFolder.SITUATIONS);
+        Files.createDirectories(to);
+        try (Stream<Path> files = Files.list(from)) {
+            for (Path f : files.toList()) {
+                Files.copy(f, to.resolve(f.getFileName()), StandardCopyOption.REPLACE_EXISTING);
+            }
+        }
+    }
+}

@@ -125,6 +125,19 @@ final class Chart {
         }
     }
 
+    /** A legend laid out in one row, for under the panels where it hides no data. */
+    static void legendRow(Graphics2D g, int x, int y, String[] labels, Color[] colours) {
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        int at = x;
+        for (int i = 0; i < labels.length; i++) {
+            g.setColor(colours[i]);
+            g.fillRect(at, y - 10, 14, 10);
+            g.setColor(Color.BLACK);
+            g.drawString(labels[i], at + 20, y);
+            at += 20 + g.getFontMetrics().stringWidth(labels[i]) + 24;
+        }
+    }
+
     static Color driver(int index) {
         return DRIVERS[index % DRIVERS.length];
     }

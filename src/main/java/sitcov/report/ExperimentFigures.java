@@ -37,7 +37,7 @@ final class ExperimentFigures {
         int k = config.faults().size();
         List<String> drivers = config.drivers();
         int n = drivers.size();
-        BufferedImage image = canvas(1000, 420);
+        BufferedImage image = canvas(1000, 440);
         Graphics2D g = graphics(image);
         title(g, "Faults found per map, by driver (" + config.name() + ", master seed " + config.masterSeed() + ", "
                 + summary.results().size() + " replications)");
@@ -63,24 +63,21 @@ final class ExperimentFigures {
                     chart.bar(f + 0.1 + d * width, width, share[d][f], Chart.driver(d));
                 }
             }
-            if (notion == 1) {
-                chart.legend(80 + notion * 480 + 240, 100, drivers.toArray(String[]::new), Chart.drivers(n));
-            }
         }
-        g.setColor(Color.BLACK);
-        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
-        g.drawString("x = number of faults found on a map; bar i spans [i, i+1), one bar per driver", 80, 395);
+        Chart.legendRow(g, 80, 400, drivers.toArray(String[]::new), Chart.drivers(n));
+        note(g, "x = number of faults found on a map; bar i spans [i, i+1), one bar per driver");
         g.dispose();
         return image;
     }
 
     static BufferedImage coverage(ExperimentConfig config, Summary summary) {
-        BufferedImage image = canvas(1000, 420);
+        BufferedImage image = canvas(1000, 440);
         Graphics2D g = graphics(image);
         title(g, String.format(Locale.ROOT, "Situation coverage (cells of %d) against effort (%s, %d replications)",
                 config.grid().cells(), config.name(), summary.results().size()));
         curves(g, config, summary, 80, "against candidate maps drawn", "candidates", p -> p.candidates());
         curves(g, config, summary, 560, "against simulated ticks", "ticks (fault-free and faulty runs)", p -> p.ticks());
+        Chart.legendRow(g, 80, 400, config.drivers().toArray(String[]::new), Chart.drivers(config.drivers().size()));
         note(g, "one line per driver and replication; a driver that runs every candidate draws far fewer");
         g.dispose();
         return image;
@@ -107,15 +104,11 @@ final class ExperimentFigures {
                         Chart.driver(config.driverIndex(d.driver())), 1.5f);
             }
         }
-        if (left > 80) {
-            chart.legend(left + 230, 300 - 18 * (config.drivers().size() - 2), config.drivers().toArray(String[]::new),
-                    Chart.drivers(config.drivers().size()));
-        }
     }
 
     /** Coverage against each driver's own wall-clock time, read from the journal's timings. */
     static BufferedImage coverageOverTime(ExperimentConfig config, Summary summary, Journal journal) {
-        BufferedImage image = canvas(560, 420);
+        BufferedImage image = canvas(560, 440);
         Graphics2D g = graphics(image);
         title(g, "Situation coverage against wall-clock time (" + config.name() + ")");
         double maxX = 0;
@@ -145,9 +138,8 @@ final class ExperimentFigures {
                 chart.line(xs, ys, Chart.driver(config.driverIndex(d.driver())), 1.5f);
             }
         }
-        chart.legend(80 + 290, 300 - 18 * (config.drivers().size() - 2), config.drivers().toArray(String[]::new),
-                Chart.drivers(config.drivers().size()));
-        note(g, "timed: differs from run to run; the paper's budget gives every driver the first one's time");
+        Chart.legendRow(g, 80, 400, config.drivers().toArray(String[]::new), Chart.drivers(config.drivers().size()));
+        note(g, "timed: differs from run to run and machine to machine");
         g.dispose();
         return image;
     }
@@ -155,7 +147,7 @@ final class ExperimentFigures {
     private static void note(Graphics2D g, String text) {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
         g.setColor(Color.BLACK);
-        g.drawString(text, 80, 395);
+        g.drawString(text, 80, 425);
     }
 
     private static BufferedImage canvas(int w, int h) {

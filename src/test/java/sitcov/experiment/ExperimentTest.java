@@ -14,15 +14,23 @@ import sitcov.faults.FaultSet;
 class ExperimentTest {
     // small enough for the test suite; faults 14 and 19 keep the faulty runs short
     private static final ExperimentConfig TINY = new ExperimentConfig("tiny", 42, 20, 2, FaultSet.parse("14,19"),
-            BudgetKind.TICKS, GridDefinition.paper());
+            BudgetKind.TICKS, GridDefinition.paper(), List.of("coverage-filter", "random", "every-other"), List.of(), 200);
 
-    private static final List<ReplicationResult> RESULTS = Experiment.run(TINY, 1, System::nanoTime, r -> { });
+    private static final List<ReplicationResult> RESULTS = ResultsCollector.run(TINY, Drivers.standard(), 1);
+
+    @Test
+    void everyReplicationHasEveryDriverInThePresetsOrder() {
+        assertEquals(2, RESULTS.size());
+        for (ReplicationResult r : RESULTS) {
+            assertEquals(TINY.drivers(), r.drivers().stream().map(DriverRun::driver).toList());
+        }
+    }
 
     @Test
     void theCoverageFilterNeverRunsTwoMapsOfOneCell() {
         for (ReplicationResult r : RESULTS) {
             Set<Integer> cells = new HashSet<>();
-            for (MapRun run : r.runsOf(Method.COVERAGE_FILTER)) {
+            for (MapRun run : r.of("coverage-filter").maps()) {
                 assertTrue(cells.add(run.cell()), "cell " + run.cell() + " run twice in replication " + r.replication()
                         + " (master seed " + TINY.masterSeed() + ")");
             }
@@ -31,59 +39,88 @@ class ExperimentTest {
     }
 
     @Test
-    void bothDriversDrawTheSameCandidateSequence() {
+    void everyDriverDrawsTheSameCandidateSequence() {
         for (ReplicationResult r : RESULTS) {
-            RandomGenerator expected = Replication.candidates(TINY.masterSeed(), r.replication());
-            long[] sequence = new long[200];
+            RandomGenerator expected = SeedPlan.candidates(TINY.masterSeed(), r.replication());
+            long[] sequence = new long[TINY.candidateLimit()];
             for (int i = 0; i < sequence.length; i++) {
                 sequence[i] = expected.nextLong();
             }
-            for (MapRun run : r.runs()) {
-                assertEquals(sequence[run.candidate()], run.externalSeed(), run.method() + " candidate " + run.candidate()
-                        + " of replication " + r.replication());
+            for (DriverRun d : r.drivers()) {
+                for (MapRun run : d.maps()) {
+                    assertEquals(sequence[run.candidate()], run.externalSeed(), d.driver() + " candidate " + run.candidate()
+                            + " of replication " + r.replication());
+                    assertEquals(new MapId.Seeded(run.externalSeed()), run.map());
+                }
             }
             // the random driver runs every candidate it draws, in order, from the first
-            List<MapRun> random = r.runsOf(Method.RANDOM);
-            assertEquals(sequence[0], random.get(0).externalSeed());
+            assertEquals(sequence[0], r.of("random").maps().get(0).externalSeed());
         }
     }
 
     @Test
-    void aMapSharedByBothDriversIsRunIdentically() {
+    void aMapSharedByTwoDriversIsRunIdentically() {
+        int shared = 0;
         for (ReplicationResult r : RESULTS) {
-            for (MapRun c : r.runsOf(Method.COVERAGE_FILTER)) {
-                r.runsOf(Method.RANDOM).stream().filter(x -> x.externalSeed() == c.externalSeed()).findFirst()
-                        .ifPresent(x -> assertEquals(c.faultFree(), x.faultFree(), "map " + c.externalSeed()));
+            for (MapRun c : r.of("coverage-filter").maps()) {
+                for (MapRun x : r.of("random").maps()) {
+                    if (x.externalSeed() == c.externalSeed()) {
+                        assertEquals(c.faultFree(), x.faultFree(), "map " + c.map().text());
+                        assertEquals(c.faults(), x.faults(), "map " + c.map().text());
+                        assertEquals(c.internalSeed(), x.internalSeed());
+                        shared++;
+                    }
+                }
+            }
+        }
+        assertTrue(shared >= 2, "only " + shared + " maps were run by both drivers; the test needs some");
+    }
+
+    @Test
+    void underTheTicksBudgetEachLaterDriverSpendsJustPastWhatTheFirstSpent() {
+        for (ReplicationResult r : RESULTS) {
+            long first = r.drivers().get(0).spend().ticks();
+            for (DriverRun d : r.drivers().subList(1, r.drivers().size())) {
+                List<MapRun> maps = d.maps();
+                long spent = maps.stream().mapToLong(MapRun::ticks).sum();
+                long beforeLast = spent - maps.get(maps.size() - 1).ticks();
+                assertEquals(spent, d.spend().ticks());
+                assertEquals(StopReason.TICKS, d.spend().stoppedBy(), d.driver());
+                assertTrue(spent >= first && beforeLast < first,
+                        d.driver() + " spent " + spent + " ticks (" + beforeLast + " before its last map) against " + first);
+            }
+            assertEquals(StopReason.CANDIDATES, r.drivers().get(0).spend().stoppedBy());
+            assertEquals(TINY.candidates(), r.drivers().get(0).spend().candidates());
+        }
+    }
+
+    @Test
+    void theEveryOtherDriverRunsOnlyCandidatesAtEvenPositions() {
+        for (ReplicationResult r : RESULTS) {
+            List<MapRun> maps = r.of("every-other").maps();
+            assertTrue(maps.size() > 3);
+            for (int i = 0; i < maps.size(); i++) {
+                assertEquals(0, maps.get(i).candidate() % 2, "map " + i);
+                assertEquals(i, maps.get(i).mapIndex());
             }
         }
     }
 
     @Test
-    void underTheTicksBudgetTheRandomDriverSpendsAtLeastWhatTheCoverageDriverSpent() {
-        for (ReplicationResult r : RESULTS) {
-            long coverage = r.runsOf(Method.COVERAGE_FILTER).stream().mapToLong(MapRun::ticks).sum();
-            List<MapRun> random = r.runsOf(Method.RANDOM);
-            long spent = random.stream().mapToLong(MapRun::ticks).sum();
-            long beforeLast = spent - random.get(random.size() - 1).ticks();
-            assertTrue(spent >= coverage && beforeLast < coverage,
-                    "random spent " + spent + " ticks (" + beforeLast + " before its last map) against " + coverage);
-        }
+    void aLaterDriverThatRunsTooFewMapsStopsAtTheCandidateLimit() {
+        // the filter reads the same 8 candidates as random but skips repeated cells, so it cannot spend as much
+        ExperimentConfig config = new ExperimentConfig("limit", 42, 8, 1, FaultSet.parse("19"), BudgetKind.TICKS,
+                GridDefinition.paper(), List.of("random", "coverage-filter"), List.of(), 8);
+        ReplicationResult r = ResultsCollector.run(config, Drivers.standard(), 1).get(0);
+        DriverSpend filter = r.of("coverage-filter").spend();
+        assertEquals(StopReason.CANDIDATE_LIMIT, filter.stoppedBy());
+        assertEquals(8, filter.candidates());
+        assertTrue(filter.ticks() < r.of("random").spend().ticks(), filter + " against " + r.of("random").spend());
     }
 
     @Test
     void resultsDoNotDependOnTheThreadCount() {
-        List<ReplicationResult> twoThreads = Experiment.run(TINY, 2, System::nanoTime, r -> { });
-        assertEquals(RESULTS.size(), twoThreads.size());
-        for (int i = 0; i < RESULTS.size(); i++) {
-            assertEquals(RESULTS.get(i).runs().size(), twoThreads.get(i).runs().size());
-            for (int k = 0; k < RESULTS.get(i).runs().size(); k++) {
-                MapRun a = RESULTS.get(i).runs().get(k);
-                MapRun b = twoThreads.get(i).runs().get(k);
-                assertEquals(a.externalSeed(), b.externalSeed());
-                assertEquals(a.faultFree(), b.faultFree());
-                assertEquals(a.verdicts().stream().map(v -> v.detection()).toList(),
-                        b.verdicts().stream().map(v -> v.detection()).toList());
-            }
-        }
+        List<ReplicationResult> twoThreads = ResultsCollector.run(TINY, Drivers.standard(), 2);
+        assertEquals(RESULTS, twoThreads);
     }
 }

@@ -5,33 +5,27 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
-import sitcov.faults.Activation;
 import sitcov.faults.Fault;
-import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.Outcome;
-import sitcov.oracle.RunResult;
 
 class MetricsTest {
     private static final List<Fault> FAULTS = List.of(Fault.WAYPOINTS_NORTH_EAST, Fault.MARKING_HALF_RANGE,
             Fault.STOPS_TURNING_WHILE_OVERTAKING);
-    private static final RunResult SAFE = new RunResult(1, 1, Outcome.TARGET_REACHED, List.of(), Map.of(), 100);
+    private static final RunSummary SAFE = new RunSummary(Outcome.TARGET_REACHED, 100, List.of(0L, 0L, 0L, 0L, 0L));
 
     /** A map on which each fault is found (F), only by the paper's notion (P), or not at all (-). */
     private static MapRun map(String marks) {
-        List<FaultVerdict> verdicts = new ArrayList<>();
+        List<FaultOutcome> outcomes = new ArrayList<>();
         for (int i = 0; i < FAULTS.size(); i++) {
             char m = marks.charAt(i);
-            Fault f = FAULTS.get(i);
-            Optional<Accident> accident = m == 'F' ? Optional.of(new Accident(5, AccidentType.LEAVEROAD, 0, 0, -1))
-                    : Optional.empty();
-            verdicts.add(new FaultVerdict(f, 1, 1, m == 'F' ? Detection.FOUND : Detection.EFFECT_NO_FAILURE, accident,
-                    m != '-', new Activation(f, true, true, 1, 3), SAFE));
+            Optional<AccidentType> accident = m == 'F' ? Optional.of(AccidentType.LEAVEROAD) : Optional.empty();
+            outcomes.add(new FaultOutcome(FAULTS.get(i), SAFE, true, true, 3,
+                    m == 'F' ? Detection.FOUND : Detection.EFFECT_NO_FAILURE, accident, m != '-'));
         }
-        return new MapRun(Method.RANDOM, 0, 0, 1, 1, 0, new double[3], SAFE, verdicts, 100);
+        return new MapRun(0, "random", 0, 0, new MapId.Seeded(1), 1, 1, 0, List.of(0.0, 0.0, 0.0), SAFE, outcomes);
     }
 
     @Test

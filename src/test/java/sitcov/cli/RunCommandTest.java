@@ -1,44 +1,88 @@
 package sitcov.cli;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.report.ResultsFolder;
 
 class RunCommandTest {
     @TempDir
     Path dir;
 
     @Test
-    void theSmokeExperimentGivesByteIdenticalRunsWithOneAndTwoThreads() throws Exception {
+    void theTinyPresetGivesByteIdenticalResultsWithOneAndTwoThreads() throws Exception {
         Path one = dir.resolve("one");
-        Path two = dir.resolve("two");
-        CliRunner a = CliRunner.run("run", "smoke", "--threads", "1", "--out", one.toString());
-        CliRunner b = CliRunner.run("run", "smoke", "--threads", "2", "--out", two.toString());
+        CliRunner a = CliRunner.run("run", ResultsFolders.TINY, "--threads", "1", "--out", one.toString());
         assertEquals(0, a.exitCode(), a.err());
-        assertEquals(0, b.exitCode(), b.err());
-        byte[] runs = Files.readAllBytes(one.resolve("runs.csv"));
-        assertArrayEquals(runs, Files.readAllBytes(two.resolve("runs.csv")), "runs.csv differs between 1 and 2 threads");
-        assertArrayEquals(Files.readAllBytes(one.resolve("summary.csv")), Files.readAllBytes(two.resolve("summary.csv")));
-        for (String file : new String[] {"summary.csv", "coverage-curve.csv", "timings.csv", "manifest.properties",
-            "fig2-faults-per-map.png", "fig3-coverage.png", "table2.csv"}) {
+        ResultsFolders.assertSameResults(ResultsFolders.tinyReference(), one);
+        for (String file : List.of(ResultsFolder.RUNS, ResultsFolder.DRIVERS, ResultsFolder.SUMMARY, ResultsFolder.TABLE2,
+                ResultsFolder.COVERAGE_CURVE, ResultsFolder.FIG2, ResultsFolder.FIG3, ResultsFolder.FIG3_TIME,
+                ResultsFolder.TIMINGS, ResultsFolder.EXECUTION, ResultsFolder.GRID, ResultsFolder.MANIFEST)) {
             assertTrue(Files.size(one.resolve(file)) > 0, file);
         }
-        assertTrue(Files.readString(one.resolve("manifest.properties")).contains("budget=ticks"));
+        String manifest = Files.readString(one.resolve(ResultsFolder.MANIFEST));
+        assertTrue(manifest.contains("\nbudget=ticks\n") && manifest.contains("\ncomplete=true\n"), manifest);
+        assertTrue(manifest.contains("\ndrivers=coverage-filter,random\n"), manifest);
         assertTrue(a.out().contains("Results in " + one), a.out());
-        // both methods ran maps: a coverage row and a random row
-        String csv = new String(runs);
-        assertTrue(csv.contains("\ncoverage,") && csv.contains("\nrandom,"));
+    }
+
+    @Test
+    void aThirdDriverNeedsOnlyItsNameInThePreset() throws Exception {
+        Path out = dir.resolve("three");
+        CliRunner r = CliRunner.run("run", "src/test/resources/presets/three-drivers.properties", "--out", out.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.out().contains("every-other     differential"), r.out());
+        List<String> drivers = Files.readAllLines(out.resolve(ResultsFolder.DRIVERS));
+        assertEquals(1 + 2 * 3, drivers.size(), "a row per driver and replication: " + drivers);
+        assertTrue(drivers.get(3).startsWith("0,every-other,"), drivers.get(3));
+        String table2 = Files.readAllLines(out.resolve(ResultsFolder.TABLE2)).get(0);
+        assertEquals("fault,name,notion,coverage-filter,random,every-other,coverage-filter_minus_random,"
+                + "coverage-filter_minus_every-other,random_minus_every-other", table2);
+        long everyOtherRows = Files.readAllLines(out.resolve(ResultsFolder.SUMMARY)).stream()
+                .filter(l -> l.startsWith("every-other,")).count();
+        assertEquals(2 * 2, everyOtherRows, "two replications under two notions");
+        Set<String> drawn = new HashSet<>();
+        for (String line : Files.readAllLines(out.resolve(ResultsFolder.RUNS))) {
+            if (line.contains(",every-other,")) {
+                drawn.add(line.split(",")[3]);
+            }
+        }
+        assertTrue(drawn.size() > 3 && drawn.stream().allMatch(c -> Integer.parseInt(c) % 2 == 0), drawn.toString());
+    }
+
+    @Test
+    void aSweepPresetGoesThroughRunToSweepCsvAndFigureFour() throws Exception {
+        Path out = dir.resolve("sweep");
+        CliRunner r = CliRunner.run("run", "src/test/resources/presets/tiny-sweep.properties", "--out", out.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        List<String> sweep = Files.readAllLines(out.resolve(ResultsFolder.SWEEP));
+        assertEquals(1 + 4, sweep.size(), sweep.toString());
+        assertTrue(Files.size(out.resolve(ResultsFolder.FIG4)) > 0);
+        List<String> runs = Files.readAllLines(out.resolve(ResultsFolder.RUNS));
+        for (int i = 1; i < sweep.size(); i++) {
+            String[] point = sweep.get(i).split(",");
+            int replication = i - 1;
+            assertEquals(i <= 2 ? "5" : "10", point[0], "budget of map set " + point[1]);
+            // cells covered, recomputed from runs.csv: distinct cells of that replication's fault-free rows
+            long cells = runs.stream().skip(1).map(l -> l.split(","))
+                    .filter(f -> f[0].equals(Integer.toString(replication)) && f[11].equals("NONE"))
+                    .map(f -> f[7]).distinct().count();
+            assertEquals(cells, Long.parseLong(point[4]), sweep.get(i));
+        }
+        assertTrue(r.out().contains("4 map sets"), r.out());
     }
 
     @Test
     void resultsNeverOverwriteAFolderThatHasFiles() throws Exception {
         Files.writeString(dir.resolve("keep.txt"), "mine");
-        CliRunner r = CliRunner.run("run", "smoke", "--out", dir.toString());
+        CliRunner r = CliRunner.run("run", ResultsFolders.TINY, "--out", dir.toString());
         assertEquals(2, r.exitCode());
         assertTrue(r.err().contains("not an empty folder"), r.err());
         assertEquals("mine", Files.readString(dir.resolve("keep.txt")));
@@ -49,5 +93,37 @@ class RunCommandTest {
         CliRunner r = CliRunner.run("run", "no-such-preset");
         assertEquals(2, r.exitCode());
         assertTrue(r.err().contains("experiments/"), r.err());
+    }
+
+    @Test
+    void presetMistakesAreRefusedNamingTheFix() throws Exception {
+        String[][] cases = {
+            {"drivers=coverage-filter,best", "unknown driver 'best'; the drivers are coverage-filter, random, every-other"},
+            {"drivers=random,random", "each once"},
+            {"candidates=many", "candidates= needs a whole number, not 'many'"},
+            {"colour=blue", "unknown key 'colour'"},
+            {"sweep=5,-1", "sweep= needs positive candidate counts"},
+            {"candidate_limit=3", "candidate_limit 3 is below the first driver's 12 candidates"},
+            {"budget=money", "unknown budget 'money'; use wall-clock or ticks"},
+        };
+        String base = Files.readString(Path.of(ResultsFolders.TINY));
+        for (String[] c : cases) {
+            String key = c[0].substring(0, c[0].indexOf('='));
+            Path preset = dir.resolve("bad.properties");
+            Files.writeString(preset, base.replaceAll("(?m)^" + key + "=.*$", "") + "\n" + c[0] + "\n");
+            CliRunner r = CliRunner.run("run", preset.toString(), "--out", dir.resolve("never").toString());
+            assertEquals(2, r.exitCode(), c[0] + ": " + r.err());
+            assertTrue(r.err().contains(c[1]), c[0] + ": " + r.err());
+            assertTrue(!Files.exists(dir.resolve("never")), c[0] + " left a results folder behind");
+        }
+    }
+
+    @Test
+    void aBadShardIsRefused() {
+        for (String shard : new String[] {"0/3", "4/3", "1/0", "two"}) {
+            CliRunner r = CliRunner.run("run", ResultsFolders.TINY, "--shard", shard, "--out", dir.resolve("x").toString());
+            assertEquals(2, r.exitCode(), shard);
+            assertTrue(r.err().contains("a shard is K/N"), r.err());
+        }
     }
 }

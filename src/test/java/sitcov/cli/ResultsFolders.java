@@ -1,0 +1,50 @@
+package sitcov.cli;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import sitcov.report.ResultsFolder;
+
+/** Fixtures for tests of results folders: the tiny preset's reference run, and byte-for-byte comparison. */
+final class ResultsFolders {
+    static final String TINY = "src/test/resources/presets/tiny.properties";
+    private static Path reference;
+
+    private ResultsFolders() {
+    }
+
+    /** The tiny preset run once, whole and uninterrupted, shared by the tests that compare against it. */
+    static synchronized Path tinyReference() throws IOException {
+        if (reference == null) {
+            Path dir = Files.createTempDirectory("sitcov-tiny-reference");
+            CliRunner r = CliRunner.run("run", TINY, "--out", dir.resolve("whole").toString(), "--threads", "2");
+            assertEquals(0, r.exitCode(), r.err());
+            reference = dir.resolve("whole");
+        }
+        return reference;
+    }
+
+    /** The files of a folder that hold results (everything but the timed files), sorted by name. */
+    static List<String> resultFiles(Path folder) throws IOException {
+        try (Stream<Path> s = Files.list(folder)) {
+            return s.map(p -> p.getFileName().toString()).filter(n -> !ResultsFolder.TIMED.contains(n)).sorted().toList();
+        }
+    }
+
+    /** Asserts that two results folders hold the same result files, byte for byte. */
+    static void assertSameResults(Path expected, Path actual) throws IOException {
+        List<String> files = resultFiles(expected);
+        assertTrue(files.contains(ResultsFolder.RUNS), expected + " holds no runs.csv");
+        assertEquals(files, resultFiles(actual), "the result files of " + actual);
+        for (String f : files) {
+            assertArrayEquals(Files.readAllBytes(expected.resolve(f)), Files.readAllBytes(actual.resolve(f)),
+                    f + " differs between " + expected + " and " + actual);
+        }
+    }
+}

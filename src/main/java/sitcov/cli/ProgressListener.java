@@ -36,12 +36,12 @@ final class ProgressListener implements ExperimentListener {
     private String name = "";
     private long lastPrint;
 
-    /** The driver a replication is at, when it started, and how much of its budget it has spent. */
+    /** The driver a replication is at, how far through it is, and how long it had run when last heard of. */
     private static final class Unit {
         int driver;
-        long since;
         double share;
-        int maps;
+        double seconds;
+        long heard;
     }
 
     ProgressListener(PrintStream err, boolean console, LongSupplier nanoClock) {
@@ -71,15 +71,17 @@ final class ProgressListener implements ExperimentListener {
             Unit u = unit(m.run().replication(), now);
             u.driver = m.driverIndex();
             u.share = m.share();
-            u.maps++;
+            u.seconds = m.driverNanos() / 1e9;
+            u.heard = now;
             maps++;
         } else if (event instanceof ExperimentEvent.DriverDone d) {
             doneSeconds[d.driverIndex()] += d.driverNanos() / 1e9;
             doneCount[d.driverIndex()]++;
             Unit u = unit(d.spend().replication(), now);
             u.driver = d.driverIndex() + 1;
-            u.since = now;
             u.share = 0;
+            u.seconds = 0;
+            u.heard = now;
         } else if (event instanceof ExperimentEvent.ReplicationDone r) {
             running.remove(r.replication());
             finished++;
@@ -93,11 +95,7 @@ final class ProgressListener implements ExperimentListener {
     }
 
     private Unit unit(int replication, long now) {
-        return running.computeIfAbsent(replication, r -> {
-            Unit u = new Unit();
-            u.since = now;
-            return u;
-        });
+        return running.computeIfAbsent(replication, r -> new Unit());
     }
 
     private void print(long now, boolean end) {
@@ -130,7 +128,7 @@ final class ProgressListener implements ExperimentListener {
         for (Unit u : running.values()) {
             double left = 0;
             for (int d = u.driver; d < drivers; d++) {
-                left += d == u.driver ? est[d] * (1 - u.share) : est[d];
+                left += d == u.driver ? Math.max(0, est[d] * (1 - u.share) - (now - u.heard) / 1e9) : est[d];
             }
             busy.add(left);
         }
@@ -156,7 +154,7 @@ final class ProgressListener implements ExperimentListener {
         List<Double> guesses = new ArrayList<>();
         for (Unit u : running.values()) {
             if (u.driver == d && u.share >= 0.01) {
-                guesses.add((now - u.since) / 1e9 / u.share);
+                guesses.add(u.seconds / u.share);
             }
         }
         if (guesses.isEmpty()) {

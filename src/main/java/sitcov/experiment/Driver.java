@@ -11,4 +11,12 @@ package sitcov.experiment;
 public interface Driver {
     /** Draws candidates and runs maps through {@code session} until {@link DriverSession#budgetLeft()} is false. */
     void drive(DriverSession session);
+
+    /**
+     * How far through its share of the replication the driver is, 0..1, for the progress display
+     * only (results never depend on it). By default, the share of its budget it has spent.
+     */
+    default double progress(DriverSession session) {
+        return session.budgetSpent();
+    }
 }

@@ -27,15 +27,18 @@ public final class DriverSession {
     private final CoverageGrid cells;
     private final List<Journal.Entry> replay;
     private final Optional<Journal.Finished> finishedBefore;
+    private final Driver self;
     private int drawn;
     private int mapsRun;
     private long ticks;
     private StopReason stop;
     private long elapsedOffset;
     private long liveSince;
+    private long liveMapNanos;
+    private int liveMaps;
 
     DriverSession(ExperimentRunner host, PlannedReplication replication, String driver, int driverIndex, Budget budget,
-                  Journal journal) {
+                  Journal journal, Driver self) {
         this.host = host;
         this.replication = replication.index();
         this.driver = driver;
@@ -47,6 +50,7 @@ public final class DriverSession {
         this.replay = journal.maps(replication.index(), driver);
         this.finishedBefore = journal.finished(replication.index(), driver);
         this.liveSince = host.nanoTime();
+        this.self = self;
     }
 
     /** Whether the driver may draw another candidate. Once false, it stays false. */
@@ -126,7 +130,8 @@ public final class DriverSession {
                 elapsedOffset = e.driverNanos();
                 liveSince = host.nanoTime();
             }
-            host.emit(new ExperimentEvent.MapJudged(run, built, true, e.mapNanos(), e.driverNanos(), driverIndex, share()));
+            host.emit(new ExperimentEvent.MapJudged(run, built, true, e.mapNanos(), e.driverNanos(), driverIndex,
+                    progress()));
             return run;
         }
         long start = host.nanoTime();
@@ -140,8 +145,10 @@ public final class DriverSession {
         MapRun run = new MapRun(replication, driver, index, candidate, id, world.seed(), internal, cell, values,
                 RunSummary.of(judged.faultFree()), judged.verdicts().stream().map(FaultOutcome::of).toList());
         charge(run);
-        host.emit(new ExperimentEvent.MapJudged(run, built, false, host.nanoTime() - start, elapsedNanos(), driverIndex,
-                share()));
+        long nanos = host.nanoTime() - start;
+        liveMapNanos += nanos;
+        liveMaps++;
+        host.emit(new ExperimentEvent.MapJudged(run, built, false, nanos, elapsedNanos(), driverIndex, progress()));
         return run;
     }
 
@@ -160,13 +167,40 @@ public final class DriverSession {
     }
 
     /** How much of its budget the driver has spent, 0..1. */
-    double share() {
+    public double budgetSpent() {
         double s = switch (budget.measure()) {
             case TICKS -> budget.amount() == 0 ? 1 : (double) ticks / budget.amount();
             case WALL_CLOCK -> budget.amount() == 0 ? 1 : (double) elapsedNanos() / budget.amount();
             default -> (double) drawn / budget.amount();
         };
         return Math.min(1, Math.max(0, s));
+    }
+
+    private double progress() {
+        return Math.min(1, Math.max(0, self.progress(this)));
+    }
+
+    public int candidatesDrawn() {
+        return drawn;
+    }
+
+    public int mapsRun() {
+        return mapsRun;
+    }
+
+    /** Candidates the driver may still draw when its budget is a number of candidates (it is the first driver), else -1. */
+    public long candidatesLeft() {
+        return budget.measure() == StopReason.CANDIDATES ? budget.amount() - drawn : -1;
+    }
+
+    /** What drawing a candidate has cost against judging a map, in wall time (0 before a map was judged). */
+    public double candidateCostInMaps() {
+        if (liveMaps == 0 || drawn == 0) {
+            return 0;
+        }
+        double perMap = (double) liveMapNanos / liveMaps;
+        double perCandidate = Math.max(0, elapsedOffset + host.nanoTime() - liveSince - liveMapNanos) / (double) drawn;
+        return perCandidate / perMap;
     }
 
     /** What the driver spent; for a driver the journal shows finished, checked against the journal. */

@@ -94,8 +94,9 @@ public final class ExperimentRunner {
             String name = config.drivers().get(d);
             Budget budget = d == 0 ? Budget.candidates(p.candidates())
                     : Budget.after(config.budget(), first, firstNanos, config.candidateLimit());
-            DriverSession session = new DriverSession(this, p, name, d, budget, journal);
-            drivers.create(name).drive(session);
+            Driver driver = drivers.create(name);
+            DriverSession session = new DriverSession(this, p, name, d, budget, journal, driver);
+            driver.drive(session);
             Journal.Finished done = session.finish();
             emit(new ExperimentEvent.DriverDone(done.spend(), d, session.wasFinishedBefore(), done.driverNanos()));
             if (d == 0) {

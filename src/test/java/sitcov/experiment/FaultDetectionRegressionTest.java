@@ -58,10 +58,9 @@ class FaultDetectionRegressionTest {
         return cases().stream().map(c -> DynamicTest.dynamicTest(
                 "fault " + c.fault().id() + " (" + c.fault().label() + ") is " + c.expect() + " on " + c.file(), () -> {
                     WorldMap map = SituationFile.read(FOLDER.resolve(c.file()));
-                    RunResult faultFree = Simulator.run(map, c.internalSeed());
-                    RunRecord faulty = Simulator.run(map, c.internalSeed(), java.util.EnumSet.of(c.fault()),
-                            RunObserver.NONE);
-                    FaultVerdict verdict = DifferentialOracle.judge(faultFree, faulty, c.fault());
+                    JudgedMap judged = MapRunner.judge(map, c.internalSeed(), List.of(c.fault()));
+                    RunResult faultFree = judged.faultFree();
+                    FaultVerdict verdict = judged.verdicts().get(0);
                     if (c.expect().equals("FOUND")) {
                         assertFalse(faultFree.hasAccident(), "the fault-free run has accidents " + faultFree.accidents()
                                 + "; " + c.replay());

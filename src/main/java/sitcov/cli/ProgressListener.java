@@ -14,7 +14,7 @@ import sitcov.experiment.PlannedReplication;
 
 /**
  * Progress of an experiment on stderr, updated per judged map: rewritten in place on a console,
- * otherwise a line every {@value #QUIET_SECONDS} s. The ETA estimates how long each driver's share
+ * otherwise at the first judged map and then a line every {@value #QUIET_SECONDS} s. The ETA estimates how long each driver's share
  * of a replication takes (from the shares finished, else from the one in progress) and deals the
  * remaining replications to the threads, so the last replication running alone is foreseen.
  */
@@ -88,7 +88,7 @@ final class ProgressListener implements ExperimentListener {
         }
         boolean end = event instanceof ExperimentEvent.Ended;
         if (end || (console ? now - lastPrint > 200_000_000L : now - lastPrint > QUIET_SECONDS * 1_000_000_000L)
-                || event instanceof ExperimentEvent.ReplicationDone) {
+                || event instanceof ExperimentEvent.ReplicationDone || (event instanceof ExperimentEvent.MapJudged && maps == 1)) {
             lastPrint = now;
             print(now, end);
         }

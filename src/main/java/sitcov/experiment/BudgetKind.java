@@ -1,8 +1,8 @@
 package sitcov.experiment;
 
 /**
- * How much the random driver may spend in a replication, measured on what the coverage driver
- * spent: the paper's equal wall-clock time (not reproducible), or equal simulated ticks (reproducible).
+ * What each later driver of a replication may spend, measured on what the first driver spent: the
+ * paper's equal wall-clock time (not reproducible), or equal simulated ticks (reproducible).
  */
 public enum BudgetKind {
     WALL_CLOCK("wall-clock"),

@@ -1,6 +1,8 @@
 /**
- * Experiments: single runs ({@link sitcov.experiment.Simulator}), the differential fault oracle,
- * test drivers, budgets, replications and metrics. Knows no file format: reports are attached by
- * the command line.
+ * Experiments: single runs ({@link sitcov.experiment.Simulator}), a map judged under every fault
+ * ({@link sitcov.experiment.MapRunner}), the differential oracle, the {@link sitcov.experiment.Driver}
+ * extension point and its drivers, budgets, the {@link sitcov.experiment.ExperimentRunner} and the
+ * events it emits, the {@link sitcov.experiment.SeedPlan} and the paper's measures. Knows no file
+ * format: the command line attaches the listeners that write results.
  */
 package sitcov.experiment;

@@ -3,6 +3,7 @@ package sitcov.cli;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -69,6 +70,8 @@ final class RunCommand implements Command {
         } catch (IOException e) {
             throw new UsageException("run: cannot create the results folder " + folder + ": " + e.getMessage()
                     + "; choose a writable --out.");
+        } catch (IllegalStateException | IllegalArgumentException e) {
+            throw new UsageException("run: " + e.getMessage() + "; name a new folder with --out.");
         }
         return execute(recorder, folder, threads, "", out, err);
     }
@@ -93,7 +96,7 @@ final class RunCommand implements Command {
                     out, err);
         } catch (IOException e) {
             throw new UsageException("run: cannot resume " + folder + ": " + e.getMessage());
-        } catch (IllegalArgumentException e) {
+        } catch (IllegalArgumentException | IllegalStateException e) {
             throw new UsageException("run: cannot resume " + folder + ": " + e.getMessage());
         }
     }
@@ -158,11 +161,21 @@ final class RunCommand implements Command {
         }
         Path base = Path.of("target", "results", config.name() + "-seed" + config.masterSeed()
                 + (shard.isWhole() ? "" : "-shard" + shard.k() + "of" + shard.n()));
-        Path folder = base;
-        for (int n = 2; Files.exists(folder); n++) {
-            folder = Path.of(base + "-" + n);
+        try {
+            Files.createDirectories(base.getParent());
+            // created here, atomically: of two runs racing for a name, one gets it and the other the next
+            for (int n = 1;; n++) {
+                Path folder = n == 1 ? base : Path.of(base + "-" + n);
+                try {
+                    return Files.createDirectory(folder);
+                } catch (FileAlreadyExistsException e) {
+                    // taken: try the next number
+                }
+            }
+        } catch (IOException e) {
+            throw new UsageException("run: cannot create a results folder under " + base.getParent() + ": "
+                    + e.getMessage() + "; run from a writable folder or name one with --out.");
         }
-        return folder;
     }
 
     static boolean isEmpty(Path dir) throws UsageException {

@@ -33,6 +33,9 @@ public final class ResultsFolder {
     public static final String SWEEP = "sweep.csv";
     public static final String FIG4 = "fig4-faults-vs-coverage.png";
 
+    /** Held by the run writing the folder; gone when it ends (a killed run leaves it, unlocked). */
+    public static final String LOCK = ".sitcov.lock";
+
     /** Files whose content depends on how fast the machine was. */
     public static final List<String> TIMED = List.of(TIMINGS, EXECUTION, FIG3_TIME);
 

@@ -26,12 +26,14 @@ public final class ResultsRecorder implements ExperimentListener {
     private final Map<String, String> execution;
     private final LongSupplier nanoClock;
     private final long start;
+    private final FolderLock lock;
     private JournalWriter writer;
     private Summary summary;
 
-    private ResultsRecorder(Path folder, Manifest manifest, Journal journal, Map<String, String> execution,
-                            LongSupplier nanoClock) throws IOException {
+    private ResultsRecorder(Path folder, FolderLock lock, Manifest manifest, Journal journal,
+                            Map<String, String> execution, LongSupplier nanoClock) throws IOException {
         this.folder = folder;
+        this.lock = lock;
         this.manifest = manifest;
         this.journal = journal;
         this.execution = new LinkedHashMap<>(execution);
@@ -43,15 +45,26 @@ public final class ResultsRecorder implements ExperimentListener {
     /**
      * Claims an empty (or new) folder: its manifest, marked incomplete, and empty journal files.
      * {@code execution} holds what the folder's execution.properties should say (threads, JDK, ...).
+     *
+     * @throws IllegalStateException when another run holds the folder
+     * @throws IllegalArgumentException when the folder holds files already
      */
     public static ResultsRecorder create(Path folder, Manifest manifest, Map<String, String> execution,
                                          LongSupplier nanoClock) throws IOException {
         Files.createDirectories(folder);
-        manifest.complete(false).write(folder);
+        FolderLock lock = FolderLock.claim(folder);
+        try (var files = Files.list(folder)) {
+            if (files.anyMatch(f -> !f.getFileName().toString().equals(ResultsFolder.LOCK))) {
+                lock.close();
+                throw new IllegalArgumentException(folder + " holds files already; results never overwrite earlier ones");
+            }
+        }
         AtomicFiles.writeString(folder.resolve(ResultsFolder.RUNS), new RunsCsv(manifest.config()).header() + "\n");
         AtomicFiles.writeString(folder.resolve(ResultsFolder.DRIVERS), DriversCsv.HEADER + "\n");
         AtomicFiles.writeString(folder.resolve(ResultsFolder.TIMINGS), TimingsCsv.HEADER + "\n");
-        return new ResultsRecorder(folder, manifest, Journal.empty(), execution, nanoClock);
+        // the manifest last: a folder that has one has its journal files too
+        manifest.complete(false).write(folder);
+        return new ResultsRecorder(folder, lock, manifest, Journal.empty(), execution, nanoClock);
     }
 
     /**
@@ -60,13 +73,20 @@ public final class ResultsRecorder implements ExperimentListener {
      */
     public static ResultsRecorder resume(Path folder, Manifest manifest, Map<String, String> execution,
                                          LongSupplier nanoClock) throws IOException {
-        Journal journal = JournalFiles.read(folder, manifest.config());
+        FolderLock lock = FolderLock.claim(folder);
+        Journal journal;
+        try {
+            journal = JournalFiles.read(folder, manifest.config());
+        } catch (IOException | RuntimeException e) {
+            lock.close();
+            throw e;
+        }
         JournalFiles.write(folder, manifest.config(), journal);
         Manifest resumed = manifest.resumedRun();
         resumed.write(folder);
         Map<String, String> facts = new LinkedHashMap<>(execution);
         facts.put("resumed_with_maps", Integer.toString(journal.size()));
-        return new ResultsRecorder(folder, resumed, journal, facts, nanoClock);
+        return new ResultsRecorder(folder, lock, resumed, journal, facts, nanoClock);
     }
 
     /** What the folder already held: the runner replays it instead of simulating again. */
@@ -91,20 +111,26 @@ public final class ResultsRecorder implements ExperimentListener {
         writer.on(event);
         if (event instanceof ExperimentEvent.Ended) {
             try {
-                close();
+                writer.close();
+                writer = null;
                 execution.put("wall_seconds", String.format(Locale.ROOT, "%.1f", (nanoClock.getAsLong() - start) / 1e9));
                 summary = ResultsFinisher.finish(folder, manifest, JournalFiles.read(folder, manifest.config()), execution);
+                lock.close();
             } catch (IOException e) {
                 throw new UncheckedIOException("could not complete the results in " + folder + ": " + e.getMessage(), e);
             }
         }
     }
 
-    /** Closes the journal files (after a halt, or when done). */
+    /** Closes the journal files and gives up the folder (after a halt, or when done). */
     public void close() throws IOException {
-        if (writer != null) {
-            writer.close();
-            writer = null;
+        try {
+            if (writer != null) {
+                writer.close();
+                writer = null;
+            }
+        } finally {
+            lock.close();
         }
     }
 

@@ -85,13 +85,15 @@ public final class ShardMerger {
         }
         Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed);
         Files.createDirectories(out);
-        merged.write(out);
-        for (int k = 1; k <= n; k++) {
-            copySituations(byK[k], out);
+        try (FolderLock lock = FolderLock.claim(out)) {
+            merged.write(out);
+            for (int k = 1; k <= n; k++) {
+                copySituations(byK[k], out);
+            }
+            Map<String, String> facts = new TreeMap<>(execution);
+            facts.put("merged_shards", String.join(" ", Stream.of(byK).skip(1).map(Path::toString).toList()));
+            return ResultsFinisher.finish(out, merged, journal, facts);
         }
-        Map<String, String> facts = new TreeMap<>(execution);
-        facts.put("merged_shards", String.join(" ", Stream.of(byK).skip(1).map(Path::toString).toList()));
-        return ResultsFinisher.finish(out, merged, journal, facts);
     }
 
     private static void checkShare(Path folder, int k, int n, int replication) {

@@ -7,10 +7,10 @@ import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import sitcov.report.MapRenderer;
+import sitcov.report.OutputFile;
 import sitcov.world.MapDescription;
 import sitcov.world.MapGenerator;
 import sitcov.world.SituationFile;
-import sitcov.world.SituationFormatException;
 import sitcov.world.WorldMap;
 
 /** {@code map}: generate a map from a seed (or load a situation file), describe it, save it, draw it. */
@@ -22,7 +22,7 @@ final class MapCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "--seed S [--png FILE] [--save FILE] | --load FILE [--png FILE]";
+        return "--seed S [--png FILE] [--save FILE] | --load FILE [--png FILE] | --check FILE...";
     }
 
     @Override
@@ -32,7 +32,10 @@ final class MapCommand implements Command {
 
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
-        Options options = Options.parse(name(), args, Set.of("--seed", "--load", "--png", "--save"), Set.of());
+        Options options = Options.parse(name(), args, Set.of("--seed", "--load", "--png", "--save"), Set.of("--check"));
+        if (options.has("--check")) {
+            return check(options, out, err);
+        }
         options.noPositional();
         Optional<Long> seed = options.seed("--seed");
         Optional<Path> load = options.inputFile("--load");
@@ -44,12 +47,16 @@ final class MapCommand implements Command {
         }
         Optional<Path> png = options.outputFile("--png");
         Optional<Path> save = options.outputFile("--save");
+        if (png.isPresent() && save.isPresent() && png.get().toAbsolutePath().normalize()
+                .equals(save.get().toAbsolutePath().normalize())) {
+            throw new UsageException("map: --png and --save both name " + png.get() + "; give each its own file.");
+        }
 
-        WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : load(load.get());
+        WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.load(name(), load.get());
         out.println(MapDescription.of(map));
         try {
             if (save.isPresent()) {
-                SituationFile.write(map, save.get());
+                OutputFile.writeString(save.get(), SituationFile.format(map));
                 out.println("Situation written to " + save.get());
             }
             if (png.isPresent()) {
@@ -63,13 +70,34 @@ final class MapCommand implements Command {
         return ExitCode.OK;
     }
 
-    private static WorldMap load(Path file) throws UsageException {
-        try {
-            return SituationFile.read(file);
-        } catch (SituationFormatException e) {
-            throw new UsageException("map: " + e.getMessage());
-        } catch (IOException e) {
-            throw new UsageException("map: cannot read " + file + ": " + e.getMessage());
+    /** {@code map --check FILE...}: reads every situation file and says which are refused, and why. */
+    private int check(Options options, PrintStream out, PrintStream err) throws UsageException {
+        for (String other : List.of("--seed", "--load", "--png", "--save")) {
+            if (options.has(other)) {
+                throw new UsageException("map: --check takes situation files only; drop " + other + ".");
+            }
         }
+        if (options.positional().isEmpty()) {
+            throw new UsageException("map: --check needs situation files, e.g. 'map --check maps/*.situation'.");
+        }
+        int refused = 0;
+        for (String name : options.positional()) {
+            try {
+                WorldMap map = Situations.load("map", Path.of(name));
+                out.println(name + ": ok (" + map.layout().roads().size() + " roads, " + map.layout().parkedCars().size()
+                        + " parked cars, " + map.movingCars().size() + " moving cars"
+                        + (map.layout().isRunnable() ? "" : "; no Target or car start, so it cannot be run") + ")");
+            } catch (UsageException e) {
+                refused++;
+                err.println("sitcov: " + e.getMessage());
+            } catch (java.nio.file.InvalidPathException e) {
+                refused++;
+                err.println("sitcov: map: '" + name + "' is not a valid path.");
+            }
+        }
+        int files = options.positional().size();
+        out.println((files - refused) + " of " + files + " situation files are valid" + (refused > 0 ? "; " + refused
+                + " refused (see above)" : ""));
+        return refused > 0 ? ExitCode.USAGE : ExitCode.OK;
     }
 }

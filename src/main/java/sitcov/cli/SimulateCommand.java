@@ -22,7 +22,6 @@ import sitcov.report.TraceWriter;
 import sitcov.report.TrajectoryRecorder;
 import sitcov.world.MapGenerator;
 import sitcov.world.SituationFile;
-import sitcov.world.SituationFormatException;
 import sitcov.world.WorldMap;
 
 /**
@@ -71,8 +70,12 @@ final class SimulateCommand implements Command {
         Set<Fault> faults = options.faults("--faults").orElse(Set.of());
         Optional<Path> png = options.outputFile("--png");
         Optional<Path> trace = options.outputFile("--trace");
+        if (png.isPresent() && trace.isPresent() && png.get().toAbsolutePath().normalize()
+                .equals(trace.get().toAbsolutePath().normalize())) {
+            throw new UsageException("simulate: --png and --trace both name " + png.get() + "; give each its own file.");
+        }
 
-        WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : load(load.get());
+        WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.loadRunnable(name(), load.get());
         long internalSeed = internal.orElse(map.seed());
         TrajectoryRecorder recorder = png.isPresent() ? new TrajectoryRecorder() : null;
         RunResult result;
@@ -170,15 +173,5 @@ final class SimulateCommand implements Command {
         }
         return where + " with " + (a.type() == AccidentType.CLASHWITHOBSTACLE ? "parked car "
                 : a.type() == AccidentType.CLASHWITHOTHERCAR ? "moving car " : "party ") + a.otherParty();
-    }
-
-    private static WorldMap load(Path file) throws UsageException {
-        try {
-            return SituationFile.read(file);
-        } catch (SituationFormatException e) {
-            throw new UsageException("simulate: " + e.getMessage());
-        } catch (IOException e) {
-            throw new UsageException("simulate: cannot read " + file + ": " + e.getMessage());
-        }
     }
 }

@@ -31,9 +31,14 @@ public final class FaultSet {
             throw new IllegalArgumentException("the fault set is empty; " + accepted());
         }
         EnumSet<Fault> set = EnumSet.noneOf(Fault.class);
-        for (String raw : text.split(",", -1)) {
+        String[] parts = text.split(",", -1);
+        for (String raw : parts) {
             String part = raw.strip();
             boolean exclude = part.startsWith("-") && !part.isEmpty();
+            if (exclude && raw == parts[0]) {
+                throw new IllegalArgumentException("'" + part + "' removes faults, but nothing comes before it to remove"
+                        + " them from; start with the set to remove them from, e.g. ALL," + part);
+            }
             String body = exclude ? part.substring(1).strip() : part;
             Set<Fault> named = named(body, part);
             if (exclude) {

@@ -9,7 +9,6 @@ import java.awt.geom.Line2D;
 import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import sitcov.geom.Box;
@@ -115,17 +114,13 @@ public final class MapRenderer {
         writeAtomically(render(map), file);
     }
 
-    /** Writes {@code image} as a PNG to a temporary file beside {@code file}, then moves it into place. */
+    /** Writes {@code image} as a PNG to {@code file}, whole or not at all (see {@link OutputFile}). */
     static void writeAtomically(BufferedImage image, Path file) throws IOException {
-        Path target = file.toAbsolutePath();
-        Path temp = AtomicFiles.temporary(target);
-        try {
-            if (!ImageIO.write(image, "png", temp.toFile())) {
+        try (OutputFile out = OutputFile.open(file)) {
+            if (!ImageIO.write(image, "png", out.stream())) {
                 throw new IOException("no PNG writer available to write " + file);
             }
-            AtomicFiles.moveIntoPlace(temp, target);
-        } finally {
-            Files.deleteIfExists(temp);
+            out.commit();
         }
     }
 

@@ -4,7 +4,6 @@ import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import sitcov.experiment.RunObserver;
@@ -24,7 +23,7 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
             + "crossing_junction,waiting_at_junction,steered_by,accidents_so_far";
 
     private final Path target;
-    private final Path temp;
+    private final OutputFile file;
     private final BufferedWriter out;
     private final String seeds;
     private final StringBuilder row = new StringBuilder(128);
@@ -33,14 +32,14 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
 
     public TraceWriter(Path file, long externalSeed, long internalSeed) throws IOException {
         this.target = file.toAbsolutePath();
-        this.temp = AtomicFiles.temporary(target);
+        this.file = OutputFile.open(target);
         this.seeds = externalSeed + "," + internalSeed + ",";
         try {
-            this.out = Files.newBufferedWriter(temp, StandardCharsets.UTF_8);
+            this.out = new BufferedWriter(new java.io.OutputStreamWriter(this.file.stream(), StandardCharsets.UTF_8));
             out.write(HEADER);
             out.write('\n');
         } catch (IOException | RuntimeException e) {
-            Files.deleteIfExists(temp);
+            this.file.close();
             throw e;
         }
     }
@@ -79,13 +78,13 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
         }
         closed = true;
         try {
-            out.close();
+            out.flush();
             if (failed) {
                 throw new IOException("the trace " + target + " was not written completely");
             }
-            AtomicFiles.moveIntoPlace(temp, target);
+            file.commit();
         } finally {
-            Files.deleteIfExists(temp);
+            file.close();
         }
     }
 

@@ -17,18 +17,38 @@ import sitcov.geom.Rect;
 import sitcov.geom.Vec2;
 
 /**
- * The rules every generated map keeps (SPEC §3). {@link #violations} lists each broken rule in
- * words; an empty list means the map is well formed.
+ * The rules every generated map keeps (SPEC §3). {@link #check} lists each broken rule with the
+ * element that breaks it; an empty list means the map is well formed.
  */
 public final class Invariants {
+    /** The kinds of element a rule is about; {@code NETWORK} is the road network as a whole. */
+    public enum Element { ROAD, JUNCTION, PARKED_CAR, TARGET, CAR_START, MOVING_CAR, NETWORK }
+
+    /** A broken rule: the element (kind and id, or 0 for the Target, the car start and the network) and the rule in words. */
+    public record Violation(Element element, int index, String rule) {
+        @Override
+        public String toString() {
+            return rule;
+        }
+    }
+
     private static final Rect WORLD = new Rect(0, 0, WORLD_WIDTH, WORLD_HEIGHT);
     private static final double EPS = 1e-6;
 
     private Invariants() {
     }
 
+    /** The broken rules, in words. */
     public static List<String> violations(WorldMap map) {
-        List<String> v = new ArrayList<>(violations(map.layout()));
+        return check(map).stream().map(Violation::rule).toList();
+    }
+
+    public static List<String> violations(Layout layout) {
+        return check(layout).stream().map(Violation::rule).toList();
+    }
+
+    public static List<Violation> check(WorldMap map) {
+        List<Violation> v = new ArrayList<>(check(map.layout()));
         Layout layout = map.layout();
         RoadNetwork network = RoadNetwork.of(layout);
         List<Box> bodies = new ArrayList<>();
@@ -36,18 +56,18 @@ public final class Invariants {
         for (int i = 0; i < map.movingCars().size(); i++) {
             StartPose pose = map.movingCars().get(i);
             String name = "moving car " + i;
-            checkStart(v, name, pose, CAR_LENGTH, CAR_WIDTH, layout, network);
+            checkStart(v, Element.MOVING_CAR, i, name, pose, CAR_LENGTH, CAR_WIDTH, layout, network);
             Box body = pose.footprint(CAR_LENGTH, CAR_WIDTH);
             if (bodies.stream().anyMatch(body::overlaps)) {
-                v.add(name + " overlaps the autonomous car or another moving car");
+                v.add(new Violation(Element.MOVING_CAR, i, name + " overlaps the autonomous car or another moving car"));
             }
             bodies.add(body);
         }
         return v;
     }
 
-    public static List<String> violations(Layout layout) {
-        List<String> v = new ArrayList<>();
+    public static List<Violation> check(Layout layout) {
+        List<Violation> v = new ArrayList<>();
         RoadNetwork network = RoadNetwork.of(layout);
         checkRoads(v, layout.roads());
         checkJunctions(v, layout);
@@ -55,31 +75,35 @@ public final class Invariants {
         layout.target().ifPresent(t -> {
             Vec2 p = t.position();
             if (!network.isOnRoad(p.x(), p.y())) {
-                v.add("the Target " + p + " is off the road");
+                v.add(new Violation(Element.TARGET, 0, "the Target " + p + " is off the road"));
             }
             if (network.isInJunction(p.x(), p.y())) {
-                v.add("the Target " + p + " is in a junction");
+                v.add(new Violation(Element.TARGET, 0, "the Target " + p + " is in a junction"));
             }
             if (layout.parkedCars().stream().anyMatch(c -> c.footprint().contains(p.x(), p.y()))) {
-                v.add("the Target " + p + " is inside a parked car");
+                v.add(new Violation(Element.TARGET, 0, "the Target " + p + " is inside a parked car"));
             }
         });
         layout.carStart().ifPresent(s -> {
-            checkStart(v, "the autonomous car", s, AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH, layout, network);
+            checkStart(v, Element.CAR_START, 0, "the autonomous car", s, AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH,
+                    layout, network);
             if (!Placement.hasRoomAhead(s, layout.parkedCars())) {
-                v.add("the autonomous car starts within " + Placement.ROOM_AHEAD + " m behind a parked car: " + s);
+                v.add(new Violation(Element.CAR_START, 0, "the autonomous car starts within " + Placement.ROOM_AHEAD
+                        + " m behind a parked car: " + s));
             }
         });
         return v;
     }
 
-    private static void checkRoads(List<String> v, List<Road> roads) {
+    private static void checkRoads(List<Violation> v, List<Road> roads) {
         for (Road road : roads) {
             if (!WORLD.contains(road.surface())) {
-                v.add("road " + road.id() + " leaves the world: " + road.surface());
+                v.add(new Violation(Element.ROAD, road.id(), "road " + road.id() + " leaves the " + WORLD_WIDTH + " x "
+                        + WORLD_HEIGHT + " m world: " + road.surface()));
             }
             if (road.length() < MIN_ROAD_LENGTH - EPS) {
-                v.add("road " + road.id() + " is " + road.length() + " m, shorter than " + MIN_ROAD_LENGTH);
+                v.add(new Violation(Element.ROAD, road.id(), "road " + road.id() + " is " + road.length()
+                        + " m, shorter than " + MIN_ROAD_LENGTH));
             }
         }
         // The network is a tree: roads meeting roads form a connected graph with one edge fewer than roads.
@@ -107,71 +131,77 @@ public final class Invariants {
             }
         }
         if (reached != roads.size() || edges != roads.size() - 1) {
-            v.add("the roads are not a tree: " + roads.size() + " roads, " + edges + " meetings, " + reached + " connected");
+            v.add(new Violation(Element.NETWORK, 0, "the roads are not a tree: " + roads.size() + " roads, " + edges
+                    + " meetings, " + reached + " connected"));
         }
     }
 
-    private static void checkJunctions(List<String> v, Layout layout) {
+    private static void checkJunctions(List<Violation> v, Layout layout) {
         List<Junction> junctions = layout.junctions();
         for (int a = 0; a < junctions.size(); a++) {
             Junction j = junctions.get(a);
             long carriers = layout.roads().stream().filter(r -> r.carries(j.centre())).count();
             int arms = j.arms().size();
             if (!(arms == 1 && carriers == 1) && !(arms == 3 && carriers == 2)) {
-                v.add("junction " + j.id() + " has " + arms + " arms on " + carriers + " roads");
+                v.add(new Violation(Element.JUNCTION, j.id(), "junction " + j.id() + " has " + arms + " arms on " + carriers
+                        + " roads (a dead end has 1 arm on 1 road, a T-junction 3 arms on 2)"));
             }
             for (int b = a + 1; b < junctions.size(); b++) {
                 if (j.square().overlaps(junctions.get(b).square())) {
-                    v.add("junctions " + j.id() + " and " + junctions.get(b).id() + " overlap");
+                    v.add(new Violation(Element.JUNCTION, junctions.get(b).id(), "junctions " + j.id() + " and "
+                            + junctions.get(b).id() + " overlap"));
                 }
             }
         }
         for (Road road : layout.roads()) {
             for (Vec2 end : List.of(road.start(), road.end())) {
                 if (junctions.stream().noneMatch(j -> j.contains(end.x(), end.y()))) {
-                    v.add("road " + road.id() + " ends at " + end + " with no junction or dead end");
+                    v.add(new Violation(Element.ROAD, road.id(), "road " + road.id() + " ends at " + end
+                            + " with no junction or dead end"));
                 }
             }
         }
     }
 
-    private static void checkParkedCars(List<String> v, Layout layout, RoadNetwork network) {
+    private static void checkParkedCars(List<Violation> v, Layout layout, RoadNetwork network) {
         List<ParkedCar> cars = layout.parkedCars();
         for (int a = 0; a < cars.size(); a++) {
             ParkedCar car = cars.get(a);
             Box body = car.footprint();
             if (!network.isOnRoad(body)) {
-                v.add("parked car " + car.id() + " is not wholly on the road");
+                v.add(new Violation(Element.PARKED_CAR, car.id(), "parked car " + car.id() + " is not wholly on the road"));
             }
             if (network.overlapsJunction(body) || network.isInJunctionZone(car.centre().x(), car.centre().y())) {
-                v.add("parked car " + car.id() + " is in a junction square, or centred in an approach or exit zone");
+                v.add(new Violation(Element.PARKED_CAR, car.id(), "parked car " + car.id()
+                        + " is in a junction square, or centred in an approach or exit zone"));
             }
             for (int b = a + 1; b < cars.size(); b++) {
                 if (body.overlaps(cars.get(b).footprint())) {
-                    v.add("parked cars " + car.id() + " and " + cars.get(b).id() + " overlap");
+                    v.add(new Violation(Element.PARKED_CAR, cars.get(b).id(), "parked cars " + car.id() + " and "
+                            + cars.get(b).id() + " overlap"));
                 }
             }
         }
     }
 
-    private static void checkStart(List<String> v, String name, StartPose pose, double length, double width,
-                                   Layout layout, RoadNetwork network) {
+    private static void checkStart(List<Violation> v, Element element, int index, String name, StartPose pose,
+                                   double length, double width, Layout layout, RoadNetwork network) {
         Vec2 p = pose.position();
         boolean onLaneCentre = layout.roads().stream().anyMatch(road -> road.contains(p.x(), p.y())
                 && Axis.of(pose.heading()) == road.axis()
                 && Math.abs(road.across(p.x(), p.y()) - road.laneCentre(pose.heading())) <= EPS);
         if (!onLaneCentre) {
-            v.add(name + " does not start on a lane centre facing its legal direction: " + pose);
+            v.add(new Violation(element, index, name + " does not start on a lane centre facing its legal direction: " + pose));
         }
         Box body = pose.footprint(length, width);
         if (!network.isOnRoad(body)) {
-            v.add(name + " does not start wholly on the road: " + pose);
+            v.add(new Violation(element, index, name + " does not start wholly on the road: " + pose));
         }
         if (network.overlapsJunction(body)) {
-            v.add(name + " starts in a junction: " + pose);
+            v.add(new Violation(element, index, name + " starts in a junction: " + pose));
         }
         if (layout.parkedCars().stream().anyMatch(c -> c.footprint().overlaps(body))) {
-            v.add(name + " starts overlapping a parked car: " + pose);
+            v.add(new Violation(element, index, name + " starts overlapping a parked car: " + pose));
         }
     }
 }

@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.List;
 
 /**
@@ -29,6 +28,13 @@ import java.util.List;
 public final class SituationFile {
     public static final String MAGIC = "sitcov-situation";
     public static final int VERSION = 1;
+    /** Far more than the generator makes (5 to 24 junction attempts, at most 9 parked and 19 moving cars). */
+    public static final int MAX_ROADS = 100;
+    public static final int MAX_JUNCTIONS = 200;
+    public static final int MAX_CARS = 200;
+    /** Every element lies in the 200 x 100 m world; a coordinate this far out is a typing slip. */
+    public static final double MAX_COORDINATE = 1000;
+    public static final int MAX_BYTES = 1 << 20;
 
     private SituationFile() {
     }
@@ -38,32 +44,28 @@ public final class SituationFile {
         return SituationWriter.format(map);
     }
 
-    /** Writes {@code map} to {@code file} atomically: a half-written file never replaces a good one. */
-    public static void write(WorldMap map, Path file) throws IOException {
-        Path absolute = file.toAbsolutePath();
-        Path folder = absolute.getParent();
-        Path temp = Files.createTempFile(folder, "." + absolute.getFileName(), ".tmp");
-        if (Files.getFileStore(temp).supportsFileAttributeView("posix")) {
-            // a situation file is for sharing: readable by others, as a file a shell made would be
-            Files.setPosixFilePermissions(temp, java.nio.file.attribute.PosixFilePermissions.fromString("rw-r--r--"));
-        }
-        try {
-            Files.writeString(temp, format(map), StandardCharsets.UTF_8);
-            Files.move(temp, absolute, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(temp);
-        }
-    }
-
-    /** Reads a situation file; a malformed one is refused with its name, line and what was expected. */
+    /**
+     * Reads a situation file; one that is malformed or breaks a rule of the world (SPEC §3) is
+     * refused with its name, the line and what was expected there or the rule broken.
+     */
     public static WorldMap read(Path file) throws IOException, SituationFormatException {
-        List<String> lines;
-        try {
-            lines = Files.readAllLines(file, StandardCharsets.UTF_8);
-        } catch (java.nio.charset.MalformedInputException e) {
-            throw new SituationFormatException(file.toString(), 0, "not a text file (expected UTF-8 text)");
+        byte[] bytes;
+        try (java.io.InputStream in = Files.newInputStream(file)) {
+            // read at most one byte past the cap: a device or a huge file is refused, never read whole
+            bytes = in.readNBytes(MAX_BYTES + 1);
         }
-        return parse(lines, file.toString());
+        if (bytes.length > MAX_BYTES) {
+            throw new SituationFormatException(file.toString(), 0, "larger than " + (MAX_BYTES >> 20)
+                    + " MiB: a situation file has at most " + MAX_ROADS + " roads, " + MAX_JUNCTIONS + " junctions and "
+                    + MAX_CARS + " parked and moving cars each");
+        }
+        String text;
+        try {
+            text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes)).toString();
+        } catch (java.nio.charset.CharacterCodingException e) {
+            throw new SituationFormatException(file.toString(), 0, "not UTF-8 text (is this a situation file?)");
+        }
+        return parse(text.lines().toList(), file.toString());
     }
 
     /** Parses the lines of a situation file; {@code source} names it in error messages. */

@@ -22,6 +22,7 @@ final class SituationParser {
     private final List<StartPose> movingCars = new ArrayList<>();
     private final List<Omission> layoutOmissions = new ArrayList<>();
     private final List<Omission> movingOmissions = new ArrayList<>();
+    private final java.util.Map<Invariants.Element, List<Integer>> lines = new java.util.EnumMap<>(Invariants.Element.class);
 
     SituationParser(String source) {
         this.source = source;
@@ -32,7 +33,9 @@ final class SituationParser {
         boolean ended = false;
         for (int i = 0; i < lines.size(); i++) {
             lineNumber = i + 1;
-            String text = lines.get(i).strip();
+            String raw = lines.get(i);
+            // an editor's UTF-8 byte-order mark is no part of the text
+            String text = (i == 0 && raw.startsWith("\uFEFF") ? raw.substring(1) : raw).strip();
             if (text.isEmpty() || text.startsWith("#")) {
                 continue;
             }
@@ -99,6 +102,7 @@ final class SituationParser {
 
     private void road() throws SituationFormatException {
         arity(6, "road ID AXIS CENTRE FROM TO");
+        cap(Invariants.Element.ROAD, roads.size(), SituationFile.MAX_ROADS, "roads");
         int id = id(1, roads.size(), "road");
         Axis axis = axis(2);
         double from = number(4, "FROM");
@@ -111,6 +115,7 @@ final class SituationParser {
 
     private void junction() throws SituationFormatException {
         arity(8, "junction ID X Y ARM_NORTH ARM_EAST ARM_SOUTH ARM_WEST");
+        cap(Invariants.Element.JUNCTION, junctions.size(), SituationFile.MAX_JUNCTIONS, "junctions");
         int id = id(1, junctions.size(), "junction");
         Vec2 centre = point(2);
         double[] arms = new double[4];
@@ -125,6 +130,7 @@ final class SituationParser {
 
     private void parkedCar() throws SituationFormatException {
         arity(6, "parked-car ID ROAD_ID X Y AXIS");
+        cap(Invariants.Element.PARKED_CAR, parkedCars.size(), SituationFile.MAX_CARS, "parked cars");
         int id = id(1, parkedCars.size(), "parked-car");
         parkedCars.add(new ParkedCar(id, roadId(2), point(3), axis(5)));
     }
@@ -132,17 +138,20 @@ final class SituationParser {
     private void target() throws SituationFormatException {
         arity(4, "target X Y ROAD_ID");
         once(target, "target");
+        cap(Invariants.Element.TARGET, 0, 1, "targets");
         target = new Target(point(1), roadId(3));
     }
 
     private void carStart() throws SituationFormatException {
         arity(4, "car-start X Y HEADING");
         once(carStart, "car-start");
+        cap(Invariants.Element.CAR_START, 0, 1, "car starts");
         carStart = new StartPose(point(1), heading(3));
     }
 
     private void movingCar() throws SituationFormatException {
         arity(4, "moving-car X Y HEADING");
+        cap(Invariants.Element.MOVING_CAR, movingCars.size(), SituationFile.MAX_CARS, "moving cars");
         movingCars.add(new StartPose(point(1), heading(3)));
     }
 
@@ -172,7 +181,26 @@ final class SituationParser {
         int[] g = generation == null ? new int[] {0, parkedCars.size(), movingCars.size()} : generation;
         Layout layout = new Layout(seed, roads, junctions, parkedCars, Optional.ofNullable(target),
                 Optional.ofNullable(carStart), g[0], g[1], layoutOmissions);
-        return new WorldMap(layout, movingCars, g[2], movingOmissions);
+        WorldMap map = new WorldMap(layout, movingCars, g[2], movingOmissions);
+        List<Invariants.Violation> broken = Invariants.check(map);
+        if (!broken.isEmpty()) {
+            Invariants.Violation first = broken.get(0);
+            List<Integer> at = lines.getOrDefault(first.element(), List.of());
+            lineNumber = first.element() == Invariants.Element.NETWORK ? lines.get(Invariants.Element.ROAD).get(0)
+                    : first.index() < at.size() ? at.get(first.index()) : 0;
+            throw error("breaks a rule of the world: " + first.rule()
+                    + (broken.size() > 1 ? " (and " + (broken.size() - 1) + " more rule" + (broken.size() > 2 ? "s" : "")
+                    + " broken)" : ""));
+        }
+        return map;
+    }
+
+    /** Notes the line of the next element of a kind, refusing more than a situation can hold. */
+    private void cap(Invariants.Element element, int count, int max, String what) throws SituationFormatException {
+        if (count >= max) {
+            throw error("more than " + max + " " + what + ": a situation holds at most " + max);
+        }
+        lines.computeIfAbsent(element, e -> new ArrayList<>()).add(lineNumber);
     }
 
     private int roadId(int index) throws SituationFormatException {
@@ -214,9 +242,12 @@ final class SituationParser {
     private double number(int index, String what) throws SituationFormatException {
         try {
             double v = Double.parseDouble(words[index]);
-            if (Double.isFinite(v)) {
+            if (Math.abs(v) <= SituationFile.MAX_COORDINATE) {
                 return v;
             }
+            throw error("expected a number for " + what + " within " + (long) SituationFile.MAX_COORDINATE
+                    + " m of the origin (the world is " + Dimensions.WORLD_WIDTH + " x " + Dimensions.WORLD_HEIGHT
+                    + " m), found '" + words[index] + "'");
         } catch (NumberFormatException e) {
             // reported below
         }

@@ -93,4 +93,31 @@ class MapCommandTest {
         assertEquals(ExitCode.USAGE, result.exitCode());
         assertTrue(result.err().contains("unknown option '--sed'; the options are"), result.err());
     }
+
+    @Test
+    void checkSaysWhichSituationFilesAreValidAndWhyTheOthersAreRefused() throws Exception {
+        Path good = folder.resolve("good.situation");
+        Path noTarget = folder.resolve("no-target.situation");
+        Path bad = folder.resolve("bad.situation");
+        String text = sitcov.world.SituationFile.format(sitcov.world.MapGenerator.generate(1));
+        Files.writeString(good, text);
+        Files.writeString(noTarget, text.replaceAll("(?m)^target .*\n", ""));
+        Files.writeString(bad, text.replace("road 0 NORTH_SOUTH 190.485 49.336 100.0", "road 0 NORTH_SOUTH 190.485 49.336 300.0"));
+        CliRunner r = CliRunner.run("map", "--check", good.toString(), noTarget.toString(), bad.toString());
+        assertEquals(ExitCode.USAGE, r.exitCode());
+        assertTrue(r.out().contains(good + ": ok (6 roads"), r.out());
+        assertTrue(r.out().contains(noTarget + ": ok") && r.out().contains("no Target or car start, so it cannot be run"), r.out());
+        assertTrue(r.err().contains(bad + ":6: breaks a rule of the world: road 0 leaves"), r.err());
+        assertTrue(r.out().contains("2 of 3 situation files are valid; 1 refused"), r.out());
+        assertEquals(0, CliRunner.run("map", "--check", good.toString()).exitCode());
+    }
+
+    @Test
+    void theSameFileForTwoOutputsIsRefused() {
+        Path same = folder.resolve("same");
+        CliRunner r = CliRunner.run("map", "--seed", "3", "--png", same.toString(), "--save", same.toString());
+        assertEquals(ExitCode.USAGE, r.exitCode());
+        assertTrue(r.err().contains("--png and --save both name"), r.err());
+        assertTrue(!Files.exists(same));
+    }
 }

@@ -125,4 +125,22 @@ class SimulateCommandTest {
         assertTrue(result.err().contains(fix), result.err());
         assertEquals("", result.out());
     }
+
+    @Test
+    void aSituationWithoutATargetIsRefusedBeforeItIsRun() throws Exception {
+        Path file = folder.resolve("no-target.situation");
+        String text = sitcov.world.SituationFile.format(sitcov.world.MapGenerator.generate(1));
+        java.nio.file.Files.writeString(file, text.replaceAll("(?m)^target .*\\n", ""));
+        CliRunner r = CliRunner.run("simulate", "--load", file.toString());
+        assertEquals(ExitCode.USAGE, r.exitCode(), r.err());
+        assertTrue(r.err().contains(file + " has no 'target X Y ROAD_ID' line; a run needs a Target"), r.err());
+    }
+
+    @Test
+    void thePictureAndTheTraceMayNotNameOneFile() {
+        Path same = folder.resolve("out");
+        CliRunner r = CliRunner.run("simulate", "--seed", "3", "--png", same.toString(), "--trace", same.toString());
+        assertEquals(ExitCode.USAGE, r.exitCode());
+        assertTrue(r.err().contains("--png and --trace both name"), r.err());
+    }
 }

@@ -35,7 +35,7 @@ class SituationFileTest {
         Path file = folder.resolve("tee.situation");
         WorldMap tee = Situations.withoutTraffic(Situations.tee());
 
-        SituationFile.write(tee, file);
+        Files.writeString(file, SituationFile.format(tee));
 
         assertEquals(tee, SituationFile.read(file));
         assertEquals(List.of(file), listFolder(), "no temporary file is left behind");
@@ -90,7 +90,7 @@ class SituationFileTest {
         Files.write(file, new byte[] {(byte) 0x89, 'P', 'N', 'G', (byte) 0xff, (byte) 0xfe, 0});
 
         SituationFormatException e = assertThrows(SituationFormatException.class, () -> SituationFile.read(file));
-        assertTrue(e.getMessage().contains("not a text file"), e.getMessage());
+        assertTrue(e.getMessage().contains("not UTF-8 text"), e.getMessage());
     }
 
     private List<Path> listFolder() throws IOException {

@@ -1,0 +1,100 @@
+package sitcov.report;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.Set;
+
+/**
+ * One output file being written. A regular file is written beside itself and moved into place
+ * whole on {@link #commit()}, so a failure never leaves half a file, and it keeps the mode it had
+ * (a new one is readable by others, 0644). A link is followed, and the file it names is replaced,
+ * not the link. A device or pipe (such as {@code /dev/null}) is written straight into: a rename would
+ * put a regular file in its place.
+ */
+public final class OutputFile implements AutoCloseable {
+    /** Results are for sharing: readable by everyone, as a file made by a shell would be. */
+    static final Set<PosixFilePermission> READABLE = PosixFilePermissions.fromString("rw-r--r--");
+
+    private final Path target;
+    private final Path temp;
+    private final OutputStream stream;
+    private boolean committed;
+
+    private OutputFile(Path target, Path temp, OutputStream stream) {
+        this.target = target;
+        this.temp = temp;
+        this.stream = stream;
+    }
+
+    public static OutputFile open(Path file) throws IOException {
+        Path target = file.toAbsolutePath();
+        if (Files.isSymbolicLink(target)) {
+            try {
+                target = target.toRealPath();
+            } catch (NoSuchFileException e) {
+                throw new IOException(file + " is a link to " + Files.readSymbolicLink(target) + ", which does not exist");
+            }
+        }
+        if (Files.isDirectory(target)) {
+            throw new IOException(file + " is a folder; name a file");
+        }
+        if (Files.exists(target) && !Files.isRegularFile(target, LinkOption.NOFOLLOW_LINKS)) {
+            return new OutputFile(target, null, Files.newOutputStream(target, StandardOpenOption.WRITE,
+                    StandardOpenOption.TRUNCATE_EXISTING));
+        }
+        Path temp = Files.createTempFile(target.getParent(), "." + target.getFileName(), ".tmp");
+        try {
+            if (Files.getFileStore(temp).supportsFileAttributeView("posix")) {
+                Files.setPosixFilePermissions(temp, Files.exists(target) ? Files.getPosixFilePermissions(target) : READABLE);
+            }
+            return new OutputFile(target, temp, Files.newOutputStream(temp));
+        } catch (IOException | RuntimeException e) {
+            Files.deleteIfExists(temp);
+            throw e;
+        }
+    }
+
+    public OutputStream stream() {
+        return stream;
+    }
+
+    /** Finishes the file: moves it into place, atomically where the file system can. */
+    public void commit() throws IOException {
+        stream.close();
+        if (temp != null) {
+            try {
+                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+        }
+        committed = true;
+    }
+
+    /** Gives up a file not committed: the target is left as it was. */
+    @Override
+    public void close() throws IOException {
+        stream.close();
+        if (!committed && temp != null) {
+            Files.deleteIfExists(temp);
+        }
+    }
+
+    /** Writes {@code text} as UTF-8 to {@code file}, whole or not at all. */
+    public static void writeString(Path file, String text) throws IOException {
+        try (OutputFile out = open(file)) {
+            out.stream().write(text.getBytes(StandardCharsets.UTF_8));
+            out.commit();
+        }
+    }
+}

@@ -18,6 +18,10 @@ import sitcov.world.WorldMap;
  * The only command that reads the clock for its results: timing is its point.
  */
 final class BenchCommand implements Command {
+    /** Enough for a steady figure; more only takes longer. */
+    static final int MAX_MAPS = 100_000;
+    static final int MAX_CANDIDATES = 10_000_000;
+
     static final int DEFAULT_MAPS = 200;
     static final int DEFAULT_CANDIDATES = 20_000;
     private static final long WARM_UP_SEED = 1_000_000L;
@@ -44,8 +48,8 @@ final class BenchCommand implements Command {
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--maps", "--candidates"), Set.of());
         options.noPositional();
-        int maps = options.count("--maps", 1).orElse(DEFAULT_MAPS);
-        int candidates = options.count("--candidates", 1).orElse(DEFAULT_CANDIDATES);
+        int maps = options.count("--maps", 1, MAX_MAPS).orElse(DEFAULT_MAPS);
+        int candidates = options.count("--candidates", 1, MAX_CANDIDATES).orElse(DEFAULT_CANDIDATES);
 
         int warmRuns = Math.min(maps, 50);
         int warmCandidates = Math.min(candidates, 5_000);

@@ -14,6 +14,9 @@ import sitcov.world.MapGenerator;
 
 /** {@code coverage --maps N}: how many cells of the situation grid N random maps reach, without simulating them. */
 final class CoverageCommand implements Command {
+    /** Counting is streamed; past this a run takes minutes for nothing the grid does not show already. */
+    static final int MAX_MAPS = 10_000_000;
+
     @Override
     public String name() {
         return "coverage";
@@ -33,7 +36,7 @@ final class CoverageCommand implements Command {
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--maps", "--seed", "--grid", "--png"), Set.of());
         options.noPositional();
-        int maps = options.count("--maps", 1).orElseThrow(() -> new UsageException(
+        int maps = options.count("--maps", 1, MAX_MAPS).orElseThrow(() -> new UsageException(
                 "coverage: give --maps N, the number of random maps to place in the grid (e.g. 20000)."));
         long first = options.firstSeed("--seed", maps);
         GridDefinition definition = grid(options.inputFile("--grid"));

@@ -12,6 +12,9 @@ import sitcov.faults.FaultSet;
  * set on N random maps and prints how often each is reached, effective and found.
  */
 final class FaultsCommand implements Command {
+    /** The calibration keeps every map's verdicts in memory for its table. */
+    static final int MAX_MAPS = 20_000;
+
     @Override
     public String name() {
         return "faults";
@@ -42,14 +45,14 @@ final class FaultsCommand implements Command {
             list(out);
             return ExitCode.OK;
         }
-        int maps = options.count("--maps", 1).orElseThrow(() -> new UsageException(
+        int maps = options.count("--maps", 1, MAX_MAPS).orElseThrow(() -> new UsageException(
                 "faults: --calibrate needs --maps N, the number of random maps to run each fault on (e.g. 1000)."));
         long first = options.firstSeed("--seed", maps);
         Set<Fault> faults = options.faults("--faults").orElse(FaultSet.parse("ALL"));
         if (faults.isEmpty()) {
             throw new UsageException("faults: the fault set is empty; name at least one fault (e.g. --faults PAPER).");
         }
-        int threads = options.count("--threads", 1).orElse(Runtime.getRuntime().availableProcessors());
+        int threads = options.threads(err);
         Progress progress = new Progress(err, "faults", maps,
                 err == System.err && System.console() != null, System::nanoTime);
         var results = FaultCalibration.run(first, maps, faults, threads, progress::done);

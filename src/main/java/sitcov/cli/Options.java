@@ -19,6 +19,9 @@ import sitcov.faults.FaultSet;
  * that names the command and the fix.
  */
 final class Options {
+    /** Far more threads than any machine sitcov runs on has cores. */
+    static final int MAX_THREADS = 4096;
+
     private final String command;
     private final Map<String, String> values = new LinkedHashMap<>();
     private final Set<String> flags = new LinkedHashSet<>();
@@ -54,7 +57,7 @@ final class Options {
             } else if (flagNames.contains(name) && eq < 0) {
                 options.flags.add(name);
             } else {
-                Set<String> all = new LinkedHashSet<>(valued);
+                Set<String> all = new java.util.TreeSet<>(valued);
                 all.addAll(flagNames);
                 throw new UsageException(command + ": unknown option '" + arg + "'; the options are "
                         + String.join(", ", all) + ".");
@@ -121,22 +124,33 @@ final class Options {
         }
     }
 
-    /** A count of at least {@code min}. */
-    Optional<Integer> count(String name, int min) throws UsageException {
+    /** A count from {@code min} to {@code max}; the limit is named when it is passed. */
+    Optional<Integer> count(String name, int min, int max) throws UsageException {
         Optional<String> text = value(name);
         if (text.isEmpty()) {
             return Optional.empty();
         }
         try {
-            int v = Integer.parseInt(text.get().strip());
-            if (v >= min) {
-                return Optional.of(v);
+            long v = Long.parseLong(text.get().strip());
+            if (v >= min && v <= max) {
+                return Optional.of((int) v);
             }
         } catch (NumberFormatException e) {
             // reported below
         }
-        throw new UsageException(command + ": " + name + " needs a whole number of at least " + min + ", not '"
+        throw new UsageException(command + ": " + name + " needs a whole number from " + min + " to " + max + ", not '"
                 + text.get() + "'.");
+    }
+
+    /** Worker threads: at least one; more than the machine's cores are capped, and said so on {@code err}. */
+    int threads(java.io.PrintStream err) throws UsageException {
+        int cores = Runtime.getRuntime().availableProcessors();
+        int asked = count("--threads", 1, MAX_THREADS).orElse(cores);
+        if (asked > cores) {
+            err.println(command + ": --threads " + asked + " is more than the " + cores + " cores here; using " + cores + ".");
+            return cores;
+        }
+        return asked;
     }
 
     /** A file to read: it must exist and be a readable file. */
@@ -145,7 +159,7 @@ final class Options {
         if (path.isPresent()) {
             Path p = path.get();
             if (!Files.isRegularFile(p) || !Files.isReadable(p)) {
-                throw new UsageException(command + ": cannot read " + name + " " + p
+                throw new UsageException(command + ": cannot read " + name + " " + shown(p)
                         + (Files.exists(p) ? " (not a readable file)" : " (no such file)") + "; check the path.");
             }
         }
@@ -159,10 +173,10 @@ final class Options {
             Path p = path.get().toAbsolutePath();
             Path folder = p.getParent();
             if (Files.isDirectory(p)) {
-                throw new UsageException(command + ": " + name + " " + path.get() + " is a folder; name a file in it.");
+                throw new UsageException(command + ": " + name + " " + shown(path.get()) + " is a folder; name a file in it.");
             }
             if (folder == null || !Files.isDirectory(folder)) {
-                throw new UsageException(command + ": the folder of " + name + " " + path.get()
+                throw new UsageException(command + ": the folder of " + name + " " + shown(path.get())
                         + " does not exist; create it first.");
             }
             if (!Files.isWritable(folder)) {
@@ -171,6 +185,11 @@ final class Options {
             }
         }
         return path;
+    }
+
+    /** A path as messages show it: an empty one as '' rather than nothing. */
+    static String shown(Path p) {
+        return p.toString().isEmpty() ? "''" : p.toString();
     }
 
     private Optional<Path> path(String name) throws UsageException {

@@ -38,11 +38,17 @@ record Preset(Path file, ExperimentConfig config) {
 
     static Preset read(Path file, Long masterSeedOverride, Drivers drivers) throws UsageException {
         Properties p = new Properties();
-        try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            p.load(r);
-        } catch (IOException e) {
+        String text;
+        try {
+            text = Files.readString(file, StandardCharsets.UTF_8);
+            p.load(new java.io.StringReader(text));
+        } catch (java.nio.charset.CharacterCodingException e) {
+            throw new UsageException("run: " + file + " is not UTF-8 text; a preset is a properties file such as"
+                    + " experiments/smoke.properties.");
+        } catch (IOException | IllegalArgumentException e) {
             throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage());
         }
+        duplicateKeys(text, file);
         return new Preset(file, config(p, file, masterSeedOverride, drivers));
     }
 
@@ -68,6 +74,10 @@ record Preset(Path file, ExperimentConfig config) {
             int replications = Integer.parseInt(p.getProperty("replications", "1").strip());
             field = "faults";
             var faults = FaultSet.parse(p.getProperty("faults", "PAPER"));
+            if (faults.isEmpty()) {
+                throw new UsageException("run: " + file + ": faults=" + p.getProperty("faults").strip() + " leaves no fault"
+                        + " to find; name at least one, e.g. faults=PAPER.");
+            }
             field = "budget";
             BudgetKind budget = BudgetKind.ofKey(p.getProperty("budget", "ticks").strip());
             field = "drivers";
@@ -90,6 +100,26 @@ record Preset(Path file, ExperimentConfig config) {
                     + p.getProperty(field, "").strip() + "'.");
         } catch (IllegalArgumentException e) {
             throw new UsageException("run: " + file + ": " + e.getMessage() + ".");
+        }
+    }
+
+    /** Properties keep the last of two lines with one key; a preset with a key twice is more likely a mistake. */
+    private static void duplicateKeys(String text, Path file) throws UsageException {
+        Set<String> seen = new java.util.HashSet<>();
+        boolean continued = false;
+        int n = 0;
+        for (String raw : text.split("\\R", -1)) {
+            n++;
+            String line = raw.stripLeading();
+            boolean wasContinued = continued;
+            continued = !line.startsWith("#") && !line.startsWith("!") && raw.matches(".*(?<!\\\\)(\\\\\\\\)*\\\\$");
+            if (wasContinued || line.isEmpty() || line.startsWith("#") || line.startsWith("!")) {
+                continue;
+            }
+            String key = line.split("[=:\\s]", 2)[0];
+            if (!seen.add(key)) {
+                throw new UsageException("run: " + file + ":" + n + ": the key '" + key + "' is given twice; keep one.");
+            }
         }
     }
 

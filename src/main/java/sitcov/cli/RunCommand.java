@@ -49,7 +49,7 @@ final class RunCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--out", "--seed", "--threads", "--shard", "--resume"), Set.of());
-        int threads = options.count("--threads", 1).orElse(Runtime.getRuntime().availableProcessors());
+        int threads = options.threads(err);
         if (options.value("--resume").isPresent()) {
             return resume(options, threads, out, err);
         }
@@ -81,6 +81,10 @@ final class RunCommand implements Command {
             throw new UsageException("run: --resume DIR takes everything from DIR's manifest; give only --threads beside it.");
         }
         Path folder = Path.of(options.value("--resume").get());
+        if (folder.toString().isEmpty() || !Files.isDirectory(folder)) {
+            throw new UsageException("run: --resume " + Options.shown(folder) + " is not a folder; name the results folder"
+                    + " of the run to resume.");
+        }
         Manifest manifest;
         try {
             manifest = Manifest.read(folder);
@@ -154,7 +158,7 @@ final class RunCommand implements Command {
         if (options.value("--out").isPresent()) {
             Path out = Path.of(options.value("--out").get());
             if (Files.isRegularFile(out) || (Files.isDirectory(out) && !isEmpty(out))) {
-                throw new UsageException("run: --out " + out + " exists and is not an empty folder; results never"
+                throw new UsageException("run: --out " + Options.shown(out) + " exists and is not an empty folder; results never"
                         + " overwrite earlier ones: name a new folder (or resume it with run --resume " + out + ").");
             }
             return out;

@@ -30,6 +30,9 @@ import sitcov.world.WorldMap;
  * fault-free calibration over N maps in a row, one thread, deterministic.
  */
 final class SimulateCommand implements Command {
+    /** The calibration keeps every run's result for its summary. */
+    static final int MAX_MAPS = 1_000_000;
+
     private static final int PIXELS_PER_METRE = 6;
 
     @Override
@@ -125,7 +128,7 @@ final class SimulateCommand implements Command {
                         + " or simulate one of the maps with --seed S.");
             }
         }
-        int maps = options.count("--maps", 1).orElseThrow();
+        int maps = options.count("--maps", 1, MAX_MAPS).orElseThrow();
         long first = options.firstSeed("--seed", maps);
         boolean perRun = !options.has("--summary");
         Calibration calibration = new Calibration(first, maps, !perRun);

@@ -17,12 +17,22 @@ import sitcov.world.Layout;
  */
 public record GridDefinition(List<Criterion> criteria, List<Bins> bins) {
     public static final String HEADER = "sitcov-grid 1";
+    /** Every cell has a counter; a grid this large no experiment could fill anyway. */
+    public static final int MAX_CELLS = 1_000_000;
 
     public GridDefinition {
         criteria = List.copyOf(criteria);
         bins = List.copyOf(bins);
         if (criteria.isEmpty() || criteria.size() != bins.size()) {
             throw new IllegalArgumentException("a grid needs at least one criterion, each with its bins");
+        }
+        long cells = 1;
+        for (Bins b : bins) {
+            cells *= b.count();
+            if (cells > MAX_CELLS) {
+                throw new IllegalArgumentException("a grid of more than " + MAX_CELLS + " cells is too large to count"
+                        + " (its bins multiply past that); use fewer bins or criteria");
+            }
         }
     }
 
@@ -89,7 +99,11 @@ public record GridDefinition(List<Criterion> criteria, List<Bins> bins) {
     }
 
     public static GridDefinition read(Path file) throws IOException {
-        return parse(Files.readAllLines(file), file.toString());
+        try {
+            return parse(Files.readAllLines(file), file.toString());
+        } catch (java.nio.charset.CharacterCodingException e) {
+            throw new IllegalArgumentException(file + ": not UTF-8 text (is this a grid file?)");
+        }
     }
 
     /** @throws IllegalArgumentException naming the line and what was expected */

@@ -26,7 +26,7 @@ class BenchCommandTest {
         CliRunner result = CliRunner.run("bench", "--candidates", "none");
 
         assertEquals(ExitCode.USAGE, result.exitCode());
-        assertTrue(result.err().startsWith("sitcov: bench: --candidates needs a whole number of at least 1"),
+        assertTrue(result.err().startsWith("sitcov: bench: --candidates needs a whole number from 1 to 10000000"),
                 result.err());
     }
 

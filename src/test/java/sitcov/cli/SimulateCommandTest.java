@@ -102,7 +102,7 @@ class SimulateCommandTest {
 
     @Test
     void badInputIsRefusedWithTheFix() {
-        assertRefused("--maps needs a whole number of at least 1, not '-5'", "--maps", "-5");
+        assertRefused("--maps needs a whole number from 1 to 1000000, not '-5'", "--maps", "-5");
         assertRefused("--seed needs a whole number such as 42", "--seed", "five");
         assertRefused("--internal-seed needs a whole number such as 42", "--seed", "5", "--internal-seed", "x");
         assertRefused("give either --seed S to generate a map or --load FILE", "--internal-seed", "7");

@@ -1,0 +1,94 @@
+package sitcov.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import sitcov.report.ResultsFolder;
+
+/** Sizes, numbers and messages: every mistake is one line that names the limit or the fix, and exit 2. */
+class InputLimitsTest {
+    @TempDir
+    Path dir;
+
+    private static void refused(String expected, String... args) {
+        CliRunner r = CliRunner.run(args);
+        assertEquals(ExitCode.USAGE, r.exitCode(), String.join(" ", args) + ": " + r.err());
+        assertTrue(r.err().contains(expected), String.join(" ", args) + ": " + r.err());
+        assertTrue(!r.err().contains("Exception") && !r.err().contains("\tat "), r.err());
+    }
+
+    @Test
+    void countsNameTheirLimits() {
+        refused("--maps needs a whole number from 1 to 20000, not '2147483647'", "faults", "--calibrate", "--maps",
+                "2147483647");
+        refused("--maps needs a whole number from 1 to 1000000, not '99999999999'", "simulate", "--maps", "99999999999");
+        refused("--threads needs a whole number from 1 to 4096, not '0'", "run", ResultsFolders.TINY, "--threads", "0");
+    }
+
+    @Test
+    void threadsBeyondTheCoresAreCappedAndTheFolderSaysHowManyRan() throws Exception {
+        int cores = Runtime.getRuntime().availableProcessors();
+        Path out = dir.resolve("threads");
+        CliRunner r = CliRunner.run("run", "src/test/resources/presets/tiny-sweep.properties", "--threads", "4000", "--out",
+                out.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.err().contains("--threads 4000 is more than the " + cores + " cores here; using " + cores), r.err());
+        assertTrue(Files.readAllLines(out.resolve(ResultsFolder.EXECUTION)).contains("threads=" + cores));
+    }
+
+    @Test
+    void presetMistakesNameTheKeyAndTheFile() throws Exception {
+        String base = Files.readString(Path.of(ResultsFolders.TINY));
+        Path twice = dir.resolve("twice.properties");
+        Files.writeString(twice, base + "candidates=13\n");
+        refused(twice + ":11: the key 'candidates' is given twice; keep one", "run", twice.toString());
+        Path none = dir.resolve("none.properties");
+        Files.writeString(none, base.replace("faults=14,19", "faults=NONE"));
+        refused("faults=NONE leaves no fault to find; name at least one", "run", none.toString());
+        Path exclusion = dir.resolve("exclusion.properties");
+        Files.writeString(exclusion, base.replace("faults=14,19", "faults=-2-4"));
+        refused("'-2-4' removes faults, but nothing comes before it", "run", exclusion.toString());
+        Path latin1 = dir.resolve("latin1.properties");
+        Files.write(latin1, (base + "description=caf\u00e9\n").getBytes(StandardCharsets.ISO_8859_1));
+        refused(latin1 + " is not UTF-8 text", "run", latin1.toString());
+        assertTrue(!Files.exists(Path.of("target", "results", "twice-seed7")), "nothing ran");
+    }
+
+    @Test
+    void aResultsFolderUnderAFileIsRefusedBeforeAnythingRuns() throws Exception {
+        Path file = dir.resolve("file.txt");
+        Files.writeString(file, "x");
+        refused("cannot create the results folder " + file.resolve("results"), "run", ResultsFolders.TINY, "--out",
+                file.resolve("results").toString());
+    }
+
+    @Test
+    void anEmptyPathIsShownAsTwoQuotes() {
+        refused("cannot read --load '' (", "map", "--load", "");
+        refused("run: --resume '' is not a folder", "run", "--resume", "");
+    }
+
+    @Test
+    void theOptionsOfAnUnknownOptionsMessageComeInAFixedOrder() {
+        CliRunner r = CliRunner.run("run", "smoke", "--sed", "1");
+        assertTrue(r.err().contains("the options are --out, --resume, --seed, --shard, --threads."), r.err());
+    }
+
+    @Test
+    void aGridWhoseCellsCannotBeCountedIsRefused() throws Exception {
+        StringBuilder edges = new StringBuilder();
+        for (int i = 0; i <= 200; i++) {
+            edges.append(' ').append(i);
+        }
+        Path grid = dir.resolve("huge-grid.txt");
+        Files.writeString(grid, "sitcov-grid 1\ncriterion target-obstacle" + edges + "\ncriterion start-target" + edges
+                + "\ncriterion previous-junction-target" + edges + "\n");
+        refused("a grid of more than 1000000 cells is too large to count", "coverage", "--maps", "10", "--grid",
+                grid.toString());
+    }
+}

@@ -3,6 +3,7 @@ package sitcov.cli;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -17,6 +18,7 @@ import sitcov.faults.Fault;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.RunResult;
+import sitcov.report.RunGallery;
 import sitcov.report.RunRenderer;
 import sitcov.report.TraceWriter;
 import sitcov.report.TrajectoryRecorder;
@@ -44,7 +46,7 @@ final class SimulateCommand implements Command {
     public String synopsis() {
         return "--seed S [--internal-seed I (default: S)] [--faults SET] [--png FILE] [--trace FILE.csv]"
                 + " | --load FILE [--internal-seed I] [--faults SET] [--png FILE] [--trace FILE.csv]"
-                + " | --maps N [--seed S0 (default: 1)] [--summary]";
+                + " | --maps N [--seed S0 (default: 1)] [--summary] [--gallery DIR]";
     }
 
     @Override
@@ -55,13 +57,15 @@ final class SimulateCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args,
-                Set.of("--seed", "--internal-seed", "--load", "--png", "--trace", "--maps", "--faults"), Set.of("--summary"));
+                Set.of("--seed", "--internal-seed", "--load", "--png", "--trace", "--maps", "--faults", "--gallery"),
+                Set.of("--summary"));
         options.noPositional();
         if (options.has("--maps")) {
             return calibrate(options, out, err);
         }
-        if (options.has("--summary")) {
-            throw new UsageException("simulate: --summary goes with --maps N; one run prints one line anyway.");
+        if (options.has("--summary") || options.has("--gallery")) {
+            throw new UsageException("simulate: " + (options.has("--summary") ? "--summary" : "--gallery")
+                    + " goes with --maps N; one run prints one line anyway (draw it with --png).");
         }
         Optional<Long> seed = options.seed("--seed");
         Optional<Long> internal = options.seed("--internal-seed");
@@ -132,12 +136,35 @@ final class SimulateCommand implements Command {
         long first = options.firstSeed("--seed", maps);
         boolean perRun = !options.has("--summary");
         Calibration calibration = new Calibration(first, maps, !perRun);
+        RunGallery gallery = null;
+        if (options.value("--gallery").isPresent()) {
+            Path folder = Path.of(options.value("--gallery").get());
+            if (Files.isRegularFile(folder) || (Files.isDirectory(folder) && !RunCommand.isEmpty(folder))) {
+                throw new UsageException("simulate: --gallery " + Options.shown(folder) + " exists and is not an empty"
+                        + " folder; name a new one.");
+            }
+            try {
+                gallery = new RunGallery(folder);
+            } catch (IOException e) {
+                throw new UsageException("simulate: cannot create the gallery folder " + Options.shown(folder) + ": "
+                        + e.getMessage() + "; choose a writable folder.");
+            }
+        }
         Progress progress = new Progress(err, "simulate", maps,
                 err == System.err && System.console() != null, System::nanoTime);
         for (int i = 0; i < maps; i++) {
             long seed = first + i;
-            RunResult result = Simulator.run(MapGenerator.generate(seed), seed);
+            WorldMap map = MapGenerator.generate(seed);
+            RunResult result = Simulator.run(map, seed);
             calibration.add(result);
+            if (gallery != null && RunGallery.wentWrong(result)) {
+                try {
+                    gallery.add(map, result);
+                } catch (IOException e) {
+                    err.println("sitcov: simulate: could not draw into the gallery: " + e.getMessage());
+                    return ExitCode.FAILURE;
+                }
+            }
             if (perRun) {
                 out.println(resultLine(result));
             }
@@ -147,6 +174,16 @@ final class SimulateCommand implements Command {
             out.println();
         }
         calibration.printTable(out);
+        if (gallery != null) {
+            try {
+                gallery.finish();
+            } catch (IOException e) {
+                err.println("sitcov: simulate: could not write the gallery's index: " + e.getMessage());
+                return ExitCode.FAILURE;
+            }
+            out.println("Gallery: " + gallery.size() + " runs with an accident or a TIMEOUT drawn into "
+                    + options.value("--gallery").get() + " (index.html, index.csv)");
+        }
         return ExitCode.OK;
     }
 

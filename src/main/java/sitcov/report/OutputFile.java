@@ -5,7 +5,6 @@ import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
-import java.nio.file.LinkOption;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -38,19 +37,20 @@ public final class OutputFile implements AutoCloseable {
 
     public static OutputFile open(Path file) throws IOException {
         Path target = file.toAbsolutePath();
+        if (Files.isDirectory(target)) {
+            throw new IOException(file + " is a folder; name a file");
+        }
+        if (Files.exists(target) && !Files.isRegularFile(target)) {
+            // a device, a pipe, or a link to one (/dev/stdout): write into it, never rename over it
+            return new OutputFile(target, null, Files.newOutputStream(target, StandardOpenOption.WRITE,
+                    StandardOpenOption.TRUNCATE_EXISTING));
+        }
         if (Files.isSymbolicLink(target)) {
             try {
                 target = target.toRealPath();
             } catch (NoSuchFileException e) {
                 throw new IOException(file + " is a link to " + Files.readSymbolicLink(target) + ", which does not exist");
             }
-        }
-        if (Files.isDirectory(target)) {
-            throw new IOException(file + " is a folder; name a file");
-        }
-        if (Files.exists(target) && !Files.isRegularFile(target, LinkOption.NOFOLLOW_LINKS)) {
-            return new OutputFile(target, null, Files.newOutputStream(target, StandardOpenOption.WRITE,
-                    StandardOpenOption.TRUNCATE_EXISTING));
         }
         Path temp = Files.createTempFile(target.getParent(), "." + target.getFileName(), ".tmp");
         try {

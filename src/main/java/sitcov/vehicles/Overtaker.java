@@ -31,12 +31,15 @@ final class Overtaker {
     static final double TIGHT_SPEED = 0.6;
     static final double PARKED_CAR_LENGTH = 5;
     static final double SAFETY_MARGIN = 8;
+    /** The shortest way back into the lane, at the tight passing speed. */
+    static final double TIGHT_RETURN = 2.5;
 
     private final AutonomousCar car;
     private final FaultSwitchboard faults;
     private OvertakingStage stage = OvertakingStage.NOT_OVERTAKING;
     private int waypoint;
     private double oppositeStart = Double.NaN;
+    private boolean toTarget;
     private Compass lane;
 
     Overtaker(AutonomousCar car, FaultSwitchboard faults) {
@@ -107,7 +110,7 @@ final class Overtaker {
             end();
             return;
         }
-        intent.limit(Double.isNaN(oppositeStart) ? PASSING_SPEED : TIGHT_SPEED, "overtaking");
+        intent.limit(Double.isNaN(oppositeStart) && !toTarget ? PASSING_SPEED : TIGHT_SPEED, "overtaking");
         double blocked = parkedCarInTheWay();
         if (!Double.isNaN(blocked)) {
             intent.stopWithin(blocked - 0.7, "overtaking");
@@ -160,7 +163,14 @@ final class Overtaker {
                             Waypoint.Kind.OVERTAKE_START);
                     return;
                 }
-                replace(farthest + BUFFER + 1, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
+                double out = farthest + BUFFER + 1;
+                double target = targetAheadInLane(laneCentre);
+                if (target > farthest && target < out + HEADWAY + TargetSeeker.CAPTURE_DISTANCE) {
+                    // the Target lies just past the row: stay out only until the row is passed, then in at it
+                    out = Math.max(farthest + BUFFER, Math.min(out, target - TIGHT_RETURN));
+                    toTarget = true;
+                }
+                replace(out, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
                 stage = OvertakingStage.PULLED_OUT;
             }
             case PULLED_OUT -> {
@@ -173,6 +183,12 @@ final class Overtaker {
                 double back = HEADWAY;
                 if (!Double.isNaN(oppositeStart)) {
                     back = Math.max(2.5, Math.min(HEADWAY, oppositeRemaining() - 1));
+                }
+                double target = targetAheadInLane(laneCentre);
+                if (toTarget || target < back + TargetSeeker.CAPTURE_DISTANCE) {
+                    // the Target lies just past the parked cars: pull back in at it, as a driver would
+                    back = Math.max(TIGHT_RETURN, Math.min(back, target));
+                    toTarget = true;
                 }
                 replace(back, laneCentre, Waypoint.Kind.OVERTAKE_FINISH);
                 stage = OvertakingStage.FINISH;
@@ -197,6 +213,15 @@ final class Overtaker {
         car.waypoints().remove(waypoint);
         stage = OvertakingStage.NOT_OVERTAKING;
         oppositeStart = Double.NaN;
+        toTarget = false;
+    }
+
+    /** How far ahead the Target lies when it is in the car's own lane ahead, else infinity. */
+    private double targetAheadInLane(double laneCentre) {
+        var target = car.scene().target().position();
+        double u = LaneFrame.u(lane, car.x(), car.y(), target.x(), target.y());
+        double v = LaneFrame.v(lane, car.x(), car.y(), target.x(), target.y());
+        return u > 0 && Math.abs(v - laneCentre) < 1.6 ? u : Double.POSITIVE_INFINITY;
     }
 
     private void replace(double u, double v, Waypoint.Kind kind) {

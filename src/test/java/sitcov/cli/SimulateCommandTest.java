@@ -143,4 +143,26 @@ class SimulateCommandTest {
         assertEquals(ExitCode.USAGE, r.exitCode());
         assertTrue(r.err().contains("--png and --trace both name"), r.err());
     }
+
+    @Test
+    void theGalleryDrawsEveryRunThatWentWrongAndNoOther() throws Exception {
+        Path gallery = folder.resolve("gallery");
+        CliRunner r = CliRunner.run("simulate", "--maps", "90", "--summary", "--gallery", gallery.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        List<String> expected = new java.util.ArrayList<>();
+        for (long seed = 1; seed <= 90; seed++) {
+            sitcov.oracle.RunResult run = sitcov.experiment.Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
+            if (run.hasAccident() || run.outcome() == sitcov.oracle.Outcome.TIMEOUT) {
+                expected.add(Long.toString(seed));
+            }
+        }
+        assertTrue(expected.size() >= 2, "maps 1..90 should hold runs that went wrong: " + expected);
+        List<String> index = Files.readAllLines(gallery.resolve("index.csv"));
+        assertEquals(expected, index.stream().skip(1).map(l -> l.split(",")[1]).toList());
+        for (String row : index.subList(1, index.size())) {
+            assertTrue(Files.size(gallery.resolve(row.split(",")[0])) > 0, row);
+        }
+        assertTrue(Files.readString(gallery.resolve("index.html")).contains("<img src=\"" + index.get(1).split(",")[0]));
+        assertTrue(r.out().contains("Gallery: " + expected.size() + " runs"), r.out());
+    }
 }

@@ -113,4 +113,21 @@ class AutonomousCarBehaviourTest {
         assertFalse(scene.occupancy().isHeldBy(tee.id(), 99));
         assertEquals(List.of(), detector.accidents());
     }
+
+    @Test
+    void itPullsInAtATargetJustPastAParkedCarInItsLaneInsteadOfPassingIt() {
+        // the parked car spans x 97.5..102.5 of the east-bound lane; the Target lies a few metres past it
+        for (double gap : new double[] {3, 5, 8}) {
+            Layout layout = Situations.layout(List.of(Situations.straightRoad()), Situations.straightRoadDeadEnds(),
+                    List.of(Situations.parkedInEastboundLane(0, 100)), new Target(new Vec2(102.5 + gap, 48.5), 0),
+                    new StartPose(new Vec2(40, 48.5), Compass.EAST));
+            boolean[] overtook = {false};
+            RunRecord run = Simulator.run(Situations.withoutTraffic(layout), 1, Set.of(),
+                    (tick, scene, detector) -> overtook[0] |= scene.autonomousCar().overtakingStage().isPassing());
+            assertTrue(overtook[0], "gap " + gap + ": the car had to pass the parked car");
+            assertEquals(Outcome.TARGET_REACHED, run.result().outcome(), "gap " + gap + ": " + run.result());
+            assertTrue(run.result().ticks() < 400, "gap " + gap + ": no circling, " + run.result().ticks() + " ticks");
+            assertEquals(List.of(), run.result().accidents(), "gap " + gap);
+        }
+    }
 }

@@ -165,8 +165,9 @@ final class Overtaker {
                 }
                 double out = farthest + BUFFER + 1;
                 double target = targetAheadInLane(laneCentre);
-                if (target > farthest && target < out + HEADWAY + TargetSeeker.CAPTURE_DISTANCE) {
-                    // the Target lies just past the row: stay out only until the row is passed, then in at it
+                if (target > farthest + TIGHT_RETURN && target < out + HEADWAY + TargetSeeker.CAPTURE_DISTANCE) {
+                    // the Target lies just past the row, with room to get in before it: stay out only
+                    // until the row is passed, then pull in at it (closer than that it cannot be reached)
                     out = Math.max(farthest + BUFFER, Math.min(out, target - TIGHT_RETURN));
                     toTarget = true;
                 }
@@ -185,7 +186,7 @@ final class Overtaker {
                     back = Math.max(2.5, Math.min(HEADWAY, oppositeRemaining() - 1));
                 }
                 double target = targetAheadInLane(laneCentre);
-                if (toTarget || target < back + TargetSeeker.CAPTURE_DISTANCE) {
+                if ((toTarget || target < back + TargetSeeker.CAPTURE_DISTANCE) && ownLaneFreeBeside(laneCentre)) {
                     // the Target lies just past the parked cars: pull back in at it, as a driver would
                     back = Math.max(TIGHT_RETURN, Math.min(back, target));
                     toTarget = true;

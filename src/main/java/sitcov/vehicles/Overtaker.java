@@ -31,6 +31,7 @@ final class Overtaker {
     static final double TIGHT_SPEED = 0.6;
     static final double PARKED_CAR_LENGTH = 5;
     static final double SAFETY_MARGIN = 8;
+    static final double MAX_PULL_OUT_ANGLE = 40;
     /** The shortest way back into the lane, at the tight passing speed. */
     static final double TIGHT_RETURN = 2.5;
 
@@ -141,6 +142,12 @@ final class Overtaker {
             }
         }
         double bearing = Bearing.between(car.x(), car.y(), wp.x(), wp.y());
+        if (stage == OvertakingStage.START) {
+            // a pull-out from close behind the parked car would swing the car's corners off the far
+            // side of the road: it pulls out at a bounded angle, inching on while the way is tight
+            double turn = Bearing.turn(lane.bearing(), bearing);
+            bearing = lane.bearing() + Math.max(-MAX_PULL_OUT_ANGLE, Math.min(MAX_PULL_OUT_ANGLE, turn));
+        }
         if (faults.isActive(Fault.STOPS_TURNING_WHILE_OVERTAKING)) {
             if (Math.abs(Bearing.turn(car.heading(), bearing)) > 1e-9) {
                 faults.effective(Fault.STOPS_TURNING_WHILE_OVERTAKING);

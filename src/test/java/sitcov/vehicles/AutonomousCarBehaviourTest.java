@@ -130,4 +130,14 @@ class AutonomousCarBehaviourTest {
             assertEquals(List.of(), run.result().accidents(), "gap " + gap);
         }
     }
+
+    @Test
+    void itPullsOutFromCloseBehindAParkedCarWithoutItsCornersLeavingTheRoad() {
+        // maps where the car crept up behind a parked car and a steep pull-out took it off the far side
+        for (long seed : new long[] {630, 824, 866}) {
+            RunResult result = Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
+            assertEquals(List.of(), result.accidents(), "seed " + seed);
+            assertEquals(Outcome.TARGET_REACHED, result.outcome(), "seed " + seed);
+        }
+    }
 }

@@ -42,8 +42,7 @@ final class RunCommand implements Command {
 
     @Override
     public String summary() {
-        return "run an experiment preset from experiments/ (smoke, paper-rq1, ...) into a results folder; "
-                + "--resume finishes a killed run, --shard runs a share (combine with merge)";
+        return "run an experiment preset (smoke, paper-rq1, ...) into a results folder; resume a killed run; run a shard";
     }
 
     @Override

@@ -193,12 +193,16 @@ final class Overtaker {
                     back = Math.max(2.5, Math.min(HEADWAY, oppositeRemaining() - 1));
                 }
                 double target = targetAheadInLane(laneCentre);
+                double in = laneCentre;
                 if ((toTarget || target < back + TargetSeeker.CAPTURE_DISTANCE) && ownLaneFreeBeside(laneCentre)) {
                     // the Target lies just past the parked cars: pull back in at it, as a driver would
                     back = Math.max(TIGHT_RETURN, Math.min(back, target));
                     toTarget = true;
+                    // aim at the Target's side of the lane, as far as the body stays in the lane
+                    in = Math.max(laneCentre - TargetSeeker.LATERAL_FREEDOM,
+                            Math.min(laneCentre + TargetSeeker.LATERAL_FREEDOM, targetAside()));
                 }
-                replace(back, laneCentre, Waypoint.Kind.OVERTAKE_FINISH);
+                replace(back, in, Waypoint.Kind.OVERTAKE_FINISH);
                 stage = OvertakingStage.FINISH;
             }
             case FINISH -> end();
@@ -222,6 +226,12 @@ final class Overtaker {
         stage = OvertakingStage.NOT_OVERTAKING;
         oppositeStart = Double.NaN;
         toTarget = false;
+    }
+
+    /** Where the Target lies across the lane frame, from the car. */
+    private double targetAside() {
+        var target = car.scene().target().position();
+        return LaneFrame.v(lane, car.x(), car.y(), target.x(), target.y());
     }
 
     /** How far ahead the Target lies when it is in the car's own lane ahead, else infinity. */

@@ -117,9 +117,10 @@ class AutonomousCarBehaviourTest {
     @Test
     void itPullsInAtATargetJustPastAParkedCarInItsLaneInsteadOfPassingIt() {
         // the parked car spans x 97.5..102.5 of the east-bound lane; the Target lies a few metres past it
-        for (double gap : new double[] {3, 5, 8}) {
+        for (double[] at : new double[][] {{3, 48.5}, {5, 48.5}, {8, 48.5}}) {
+            double gap = at[0];
             Layout layout = Situations.layout(List.of(Situations.straightRoad()), Situations.straightRoadDeadEnds(),
-                    List.of(Situations.parkedInEastboundLane(0, 100)), new Target(new Vec2(102.5 + gap, 48.5), 0),
+                    List.of(Situations.parkedInEastboundLane(0, 100)), new Target(new Vec2(102.5 + gap, at[1]), 0),
                     new StartPose(new Vec2(40, 48.5), Compass.EAST));
             boolean[] overtook = {false};
             RunRecord run = Simulator.run(Situations.withoutTraffic(layout), 1, Set.of(),
@@ -138,6 +139,17 @@ class AutonomousCarBehaviourTest {
             RunResult result = Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
             assertEquals(List.of(), result.accidents(), "seed " + seed);
             assertEquals(Outcome.TARGET_REACHED, result.outcome(), "seed " + seed);
+        }
+    }
+
+    @Test
+    void itPullsInTowardsATargetOffItsLaneCentreJustPastAParkedCar() {
+        // maps whose Target lies past a parked car, over a metre off the lane centre: back on its lane
+        // centre the car passed it more than 1.5 m away and circled until TIMEOUT
+        for (long seed : new long[] {137, 208}) {
+            RunResult result = Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
+            assertEquals(Outcome.TARGET_REACHED, result.outcome(), "seed " + seed + ": " + result);
+            assertEquals(List.of(), result.accidents(), "seed " + seed);
         }
     }
 }

@@ -54,7 +54,9 @@ final class TargetSeeker {
         }
         intent.stopWithin(Math.max(0, u), "target");
         double aim = Math.max(laneCentre - LATERAL_FREEDOM, Math.min(laneCentre + LATERAL_FREEDOM, v));
-        intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(aim, Math.max(2, u))), "target");
+        // aiming no nearer than the direct distance keeps the turn gentle: a sharp one in the last
+        // metres swings the body (it turns about its rear axle) over the centre line or the kerb
+        intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(aim, Math.max(DIRECT_DISTANCE, u))), "target");
     }
 
     /** Whether the car now stands on the Target, in its own lane. */

@@ -152,4 +152,15 @@ class AutonomousCarBehaviourTest {
             assertEquals(List.of(), result.accidents(), "seed " + seed);
         }
     }
+
+    @Test
+    void itSteersGentlyOntoATargetJustAheadWithoutItsBodyCrossingTheCentreLine() {
+        // map 579: the Target lies 2 m past a junction's exit, by the centre line; aiming at it from 2 m
+        // swung the car's body over the line; maps 86 and 143 left their lane the same way near the Target
+        for (long seed : new long[] {579, 86, 143}) {
+            RunResult result = Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
+            assertEquals(Outcome.TARGET_REACHED, result.outcome(), "seed " + seed + ": " + result);
+            assertEquals(List.of(), result.accidents(), "seed " + seed);
+        }
+    }
 }

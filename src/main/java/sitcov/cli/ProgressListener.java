@@ -35,6 +35,8 @@ final class ProgressListener implements ExperimentListener {
     private int maps;
     private String name = "";
     private long lastPrint;
+    /** Whether a map was simulated yet: while a resumed run replays its journal, times say nothing. */
+    private boolean live;
 
     /** The driver a replication is at, how far through it is, and how long it had run when last heard of. */
     private static final class Unit {
@@ -74,6 +76,7 @@ final class ProgressListener implements ExperimentListener {
             u.seconds = m.driverNanos() / 1e9;
             u.heard = now;
             maps++;
+            live |= !m.resumed();
         } else if (event instanceof ExperimentEvent.DriverDone d) {
             doneSeconds[d.driverIndex()] += d.driverNanos() / 1e9;
             doneCount[d.driverIndex()]++;
@@ -113,6 +116,9 @@ final class ProgressListener implements ExperimentListener {
 
     /** Seconds until the last replication ends, or NaN while nothing tells how long a driver takes. */
     double eta(long now) {
+        if (!live) {
+            return Double.NaN;
+        }
         double[] est = new double[drivers];
         for (int d = 0; d < drivers; d++) {
             est[d] = estimate(d, now);

@@ -70,4 +70,17 @@ class ProgressListenerTest {
         String text = err.toString(StandardCharsets.UTF_8);
         assertTrue(text.contains("0/3 replications done, 1 maps judged, 16 s elapsed, ETA"), text);
     }
+
+    @Test
+    void whileAResumedRunReplaysItsJournalTheEtaIsStillBeingEstimated() {
+        progress.on(new ExperimentEvent.Started(CONFIG, Shard.WHOLE, CONFIG.plan(), 2, 5));
+        ExperimentEvent.MapJudged live = map(0, 0, 0.25, 10);
+        ExperimentEvent.MapJudged replayed = new ExperimentEvent.MapJudged(live.run(), Optional.empty(), true, S, 10 * S,
+                0, 0.25);
+        progress.on(replayed);
+        assertTrue(Double.isNaN(progress.eta(now[0])), "the replayed journal's times say nothing of this machine");
+        now[0] = 10 * S;
+        progress.on(live);
+        assertTrue(Double.isFinite(progress.eta(now[0])));
+    }
 }

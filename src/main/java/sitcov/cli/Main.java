@@ -33,7 +33,6 @@ public final class Main {
                 new MapCommand(),
                 new CoverageCommand(),
                 new FaultsCommand(),
-                new PlannedCommand("replay", "FILE", "replay a recorded run"),
                 new BenchCommand()));
     }
 
@@ -118,7 +117,7 @@ public final class Main {
         out.println();
         out.println("Run '" + PROGRAM + " COMMAND --help' for a command's options.");
         out.println("From Maven: mvn -q compile exec:java -Dexec.args=\"COMMAND OPTIONS\"");
-        out.println("Exit codes: 0 done, 1 failed or not available, 2 bad input.");
+        out.println("Exit codes: 0 done, 1 failed, 2 bad input.");
     }
 
     private static void printCommandHelp(Command command, PrintStream out) {

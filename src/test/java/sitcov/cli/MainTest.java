@@ -12,7 +12,7 @@ class MainTest {
         CliRunner result = CliRunner.run("--help");
 
         assertEquals(ExitCode.OK, result.exitCode());
-        for (String command : new String[] {"run", "simulate", "map", "coverage", "faults", "replay", "bench"}) {
+        for (String command : new String[] {"run", "merge", "simulate", "map", "coverage", "faults", "bench"}) {
             assertTrue(result.out().contains("\n  " + command + " "), command + " missing from:\n" + result.out());
         }
         assertEquals("", result.err());

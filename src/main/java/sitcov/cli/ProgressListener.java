@@ -10,7 +10,6 @@ import java.util.Map;
 import java.util.function.LongSupplier;
 import sitcov.experiment.ExperimentEvent;
 import sitcov.experiment.ExperimentListener;
-import sitcov.experiment.PlannedReplication;
 
 /**
  * Progress of an experiment on stderr, updated per judged map: rewritten in place on a console,
@@ -64,9 +63,6 @@ final class ProgressListener implements ExperimentListener {
             name = s.config().name();
             doneSeconds = new double[drivers];
             doneCount = new int[drivers];
-            for (PlannedReplication p : s.replications()) {
-                running.remove(p.index());
-            }
             return;
         }
         if (event instanceof ExperimentEvent.MapJudged m) {

@@ -78,8 +78,8 @@ public final class JournalFiles {
             timings.append(TimingsCsv.doneRow(f.spend().replication(), f.spend().driver(), f.spend().mapsRun(),
                     f.driverNanos()));
         }
-        AtomicFiles.writeString(folder.resolve(ResultsFolder.TIMINGS), timings.toString());
-        AtomicFiles.writeString(folder.resolve(ResultsFolder.RUNS), runs.toString());
-        AtomicFiles.writeString(folder.resolve(ResultsFolder.DRIVERS), drivers.toString());
+        OutputFile.writeString(folder.resolve(ResultsFolder.TIMINGS), timings.toString());
+        OutputFile.writeString(folder.resolve(ResultsFolder.RUNS), runs.toString());
+        OutputFile.writeString(folder.resolve(ResultsFolder.DRIVERS), drivers.toString());
     }
 }

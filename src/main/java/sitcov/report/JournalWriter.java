@@ -45,7 +45,7 @@ final class JournalWriter implements ExperimentListener, AutoCloseable {
                 if (m.builtSituation().isPresent()) {
                     Path file = ResultsFolder.situation(folder, ((MapId.Situation) m.run().map()).name());
                     Files.createDirectories(file.getParent());
-                    AtomicFiles.writeString(file, SituationFile.format(m.builtSituation().get()));
+                    OutputFile.writeString(file, SituationFile.format(m.builtSituation().get()));
                 }
                 write(timings, TimingsCsv.mapRow(m.run().replication(), m.run().driver(), m.run().mapIndex(), m.mapNanos(),
                         m.driverNanos()));

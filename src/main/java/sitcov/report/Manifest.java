@@ -82,8 +82,8 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
 
     /** Writes the manifest and the grid file beside it. */
     void write(Path folder) throws IOException {
-        AtomicFiles.writeLines(folder.resolve(ResultsFolder.GRID), Arrays.asList(config.grid().format().split("\n")));
-        AtomicFiles.writeLines(folder.resolve(ResultsFolder.MANIFEST), lines());
+        OutputFile.writeLines(folder.resolve(ResultsFolder.GRID), Arrays.asList(config.grid().format().split("\n")));
+        OutputFile.writeLines(folder.resolve(ResultsFolder.MANIFEST), lines());
     }
 
     /**

@@ -90,6 +90,15 @@ public final class OutputFile implements AutoCloseable {
         }
     }
 
+    /** Writes {@code rows} as UTF-8 lines ending in '\n', whole or not at all. */
+    public static void writeLines(Path file, java.util.List<String> rows) throws IOException {
+        StringBuilder text = new StringBuilder();
+        for (String row : rows) {
+            text.append(row).append('\n');
+        }
+        writeString(file, text.toString());
+    }
+
     /** Writes {@code text} as UTF-8 to {@code file}, whole or not at all. */
     public static void writeString(Path file, String text) throws IOException {
         try (OutputFile out = open(file)) {

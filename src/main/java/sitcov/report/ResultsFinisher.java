@@ -58,9 +58,9 @@ public final class ResultsFinisher {
             SweepReport.write(config, summary, folder);
         } else {
             ResultsTables tables = new ResultsTables(config, summary);
-            AtomicFiles.writeLines(folder.resolve(ResultsFolder.SUMMARY), tables.summary());
-            AtomicFiles.writeLines(folder.resolve(ResultsFolder.TABLE2), tables.table2());
-            AtomicFiles.writeLines(folder.resolve(ResultsFolder.COVERAGE_CURVE), tables.curve());
+            OutputFile.writeLines(folder.resolve(ResultsFolder.SUMMARY), tables.summary());
+            OutputFile.writeLines(folder.resolve(ResultsFolder.TABLE2), tables.table2());
+            OutputFile.writeLines(folder.resolve(ResultsFolder.COVERAGE_CURVE), tables.curve());
             ExperimentFigures.writeAll(config, summary, journal, folder);
         }
         writeExecution(folder, execution);
@@ -72,6 +72,6 @@ public final class ResultsFinisher {
         List<String> rows = new ArrayList<>();
         rows.add("# how this results folder was produced (not part of the results)");
         new TreeMap<>(execution).forEach((k, v) -> rows.add(k + "=" + v));
-        AtomicFiles.writeLines(folder.resolve(ResultsFolder.EXECUTION), rows);
+        OutputFile.writeLines(folder.resolve(ResultsFolder.EXECUTION), rows);
     }
 }

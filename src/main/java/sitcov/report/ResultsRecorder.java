@@ -59,9 +59,9 @@ public final class ResultsRecorder implements ExperimentListener {
                 throw new IllegalArgumentException(folder + " holds files already; results never overwrite earlier ones");
             }
         }
-        AtomicFiles.writeString(folder.resolve(ResultsFolder.RUNS), new RunsCsv(manifest.config()).header() + "\n");
-        AtomicFiles.writeString(folder.resolve(ResultsFolder.DRIVERS), DriversCsv.HEADER + "\n");
-        AtomicFiles.writeString(folder.resolve(ResultsFolder.TIMINGS), TimingsCsv.HEADER + "\n");
+        OutputFile.writeString(folder.resolve(ResultsFolder.RUNS), new RunsCsv(manifest.config()).header() + "\n");
+        OutputFile.writeString(folder.resolve(ResultsFolder.DRIVERS), DriversCsv.HEADER + "\n");
+        OutputFile.writeString(folder.resolve(ResultsFolder.TIMINGS), TimingsCsv.HEADER + "\n");
         // the manifest last: a folder that has one has its journal files too
         manifest.complete(false).write(folder);
         return new ResultsRecorder(folder, lock, manifest, Journal.empty(), execution, nanoClock);

@@ -66,7 +66,7 @@ public final class RunGallery {
         List<String> csv = new ArrayList<>();
         csv.add("file,external_seed,internal_seed,outcome,ticks,accident_types");
         csv.addAll(rows);
-        AtomicFiles.writeLines(folder.resolve("index.csv"), csv);
+        OutputFile.writeLines(folder.resolve("index.csv"), csv);
         StringBuilder html = new StringBuilder("<!doctype html><meta charset=utf-8><title>sitcov gallery</title>\n"
                 + "<style>body{font-family:sans-serif}figure{display:inline-block;margin:8px}img{width:600px}</style>\n"
                 + "<h1>Runs with an accident or a TIMEOUT: " + files.size() + "</h1>\n");
@@ -74,6 +74,6 @@ public final class RunGallery {
             html.append("<figure><a href=\"").append(f).append("\"><img src=\"").append(f).append("\" alt=\"").append(f)
                     .append("\"></a><figcaption>").append(f).append("</figcaption></figure>\n");
         }
-        AtomicFiles.writeString(folder.resolve("index.html"), html.toString());
+        OutputFile.writeString(folder.resolve("index.html"), html.toString());
     }
 }

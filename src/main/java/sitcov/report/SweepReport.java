@@ -28,7 +28,7 @@ final class SweepReport {
             rows.add(String.format(Locale.ROOT, "%d,%d,%s,%d,%d,%d,%d,%.4f,%.4f", p.candidates(), p.set(), p.driver(),
                     p.maps(), p.cells(), p.faultsFound(), p.faultsFoundPaper(), p.avgMapFault(), p.avgMapFaultPaper()));
         }
-        AtomicFiles.writeLines(folder.resolve(ResultsFolder.SWEEP), rows);
+        OutputFile.writeLines(folder.resolve(ResultsFolder.SWEEP), rows);
         MapRenderer.writeAtomically(figure(config, points), folder.resolve(ResultsFolder.FIG4));
     }
 

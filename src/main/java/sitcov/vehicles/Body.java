@@ -1,6 +1,7 @@
 package sitcov.vehicles;
 
 import sitcov.geom.Bearing;
+import sitcov.geom.Box;
 
 /**
  * The kinematic state of a car: front-centre position, heading and speed, changed only by the
@@ -59,13 +60,30 @@ final class Body {
 
     /** One tick's speed change towards {@code target}: accelerate, brake or hold, never overshooting by more than one step. */
     void approachSpeed(double target) {
+        speed = speedAfter(target);
+    }
+
+    private double speedAfter(double target) {
         if (speed > target + 1e-9) {
-            brake();
+            return Math.max(0, speed - Dynamics.BRAKING);
         } else if (speed + Dynamics.ACCELERATION <= target + 1e-9) {
-            accelerate();
-        } else if (speed < target) {
-            speed = target;
+            return Math.min(Dynamics.MAX_SPEED, speed + Dynamics.ACCELERATION);
         }
+        return Math.max(speed, target);
+    }
+
+    /**
+     * The footprint ({@code length} by {@code width}) this body would have after one tick of
+     * {@link #approachSpeed}, {@link #turnTowards} and {@link #move}, leaving the body as it is.
+     */
+    Box footprintAfter(double targetSpeed, double bearing, double maxTurn, double length, double width) {
+        double turn = Math.max(-maxTurn, Math.min(maxTurn, Bearing.turn(heading, bearing)));
+        double h = Bearing.normalise(heading + turn);
+        double nx = x - pivot * Bearing.dx(heading) + pivot * Bearing.dx(h);
+        double ny = y - pivot * Bearing.dy(heading) + pivot * Bearing.dy(h);
+        double v = speedAfter(targetSpeed);
+        double r = Math.toRadians(h);
+        return Box.behind(nx + v * Math.sin(r), ny + v * Math.cos(r), h, length, width);
     }
 
     /** Turns towards {@code bearing} by at most {@code maxTurn} degrees. */

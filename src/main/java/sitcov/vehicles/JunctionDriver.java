@@ -36,6 +36,11 @@ final class JunctionDriver {
     static final double LOOK_BEYOND = 12;
     /** A crossing that has taken the car this far from the junction's centre has gone wrong: give it up. */
     static final double STRAYED = 12;
+    /**
+     * Where every car waits short of a junction's square it may not enter yet: back far enough
+     * that a car turning through the square, whose corners swing wide, passes clear of it.
+     */
+    static final double WAIT_SHORT_OF_SQUARE = 2.5;
 
     private final AutonomousCar car;
     private final FaultSwitchboard faults;
@@ -143,7 +148,7 @@ final class JunctionDriver {
             if (d > 0 && !exitIsClear(next, leaving)) {
                 // do not enter a junction without room to leave it: wait short of the square
                 waiting = true;
-                intent.stopWithin(d - 0.5, "junction");
+                intent.stopWithin(d - WAIT_SHORT_OF_SQUARE, "junction");
                 return;
             }
             if (d <= 0 && !crossing) {
@@ -172,19 +177,25 @@ final class JunctionDriver {
                 held = next.id();
                 exit = chosen;
             }
+            if (!exitIsClear(next, chosen)) {
+                // granted the junction so close to it that it would be in before looking at the exit
+                waiting = true;
+                intent.stopWithin(d - WAIT_SHORT_OF_SQUARE, "junction");
+                return;
+            }
             intent.limit(Dynamics.speedToSlowTo(entrySpeed(lane, chosen), d), "junction");
             return;
         }
         waiting = true;
         if (faults.isActive(Fault.CREEPS_WHILE_WAITING)) {
             intent.crawl();
-            if (car.speed() > 0 || d > 0.5) {
+            if (car.speed() > 0 || d > WAIT_SHORT_OF_SQUARE) {
                 faults.effective(Fault.CREEPS_WHILE_WAITING);
             } else {
                 faults.reached(Fault.CREEPS_WHILE_WAITING);
             }
         } else {
-            intent.stopWithin(d - 0.5, "junction");
+            intent.stopWithin(d - WAIT_SHORT_OF_SQUARE, "junction");
         }
     }
 

@@ -32,6 +32,8 @@ final class Overtaker {
     static final double PARKED_CAR_LENGTH = 5;
     static final double SAFETY_MARGIN = 8;
     static final double MAX_PULL_OUT_ANGLE = 40;
+    /** A Target in a gap of the row needs this much free lane beyond it for the car's front. */
+    static final double GAP_BEYOND_TARGET = 0.8;
     /** The shortest way back into the lane, at the tight passing speed. */
     static final double TIGHT_RETURN = 2.5;
 
@@ -172,10 +174,14 @@ final class Overtaker {
                 }
                 double out = farthest + BUFFER + 1;
                 double target = targetAheadInLane(laneCentre);
-                if (target > farthest + TIGHT_RETURN && target < out + HEADWAY + TargetSeeker.CAPTURE_DISTANCE) {
+                // the Target may lie in a gap of the row: what matters is the row up to the Target
+                double before = farthestParkedBefore(target, laneCentre);
+                double rowEnd = Double.isNaN(before) ? farthest : before;
+                if (target > rowEnd + TIGHT_RETURN && target < rowEnd + BUFFER + 1 + HEADWAY + TargetSeeker.CAPTURE_DISTANCE
+                        && Double.isNaN(farthestParkedBefore(target + GAP_BEYOND_TARGET, laneCentre, target))) {
                     // the Target lies just past the row, with room to get in before it: stay out only
                     // until the row is passed, then pull in at it (closer than that it cannot be reached)
-                    out = Math.max(farthest + BUFFER, Math.min(out, target - TIGHT_RETURN));
+                    out = Math.max(rowEnd + BUFFER, Math.min(rowEnd + BUFFER + 1, target - TIGHT_RETURN));
                     toTarget = true;
                 }
                 replace(out, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
@@ -183,7 +189,9 @@ final class Overtaker {
             }
             case PULLED_OUT -> {
                 Sighting s = look(laneCentre);
-                if (!Double.isNaN(s.farthest) && s.farthest > 0) {
+                boolean rowBeforeTarget = !toTarget
+                        || !Double.isNaN(farthestParkedBefore(targetAheadInLane(laneCentre), laneCentre));
+                if (!Double.isNaN(s.farthest) && s.farthest > 0 && rowBeforeTarget) {
                     // another parked car came into view beyond the one passed: keep passing
                     replace(s.farthest + BUFFER + 1, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
                     return;
@@ -296,6 +304,23 @@ final class Overtaker {
             }
         }
         return true;
+    }
+
+    /** The farthest LIDAR hit on a parked car in the car's lane between it and {@code before} metres ahead, or NaN. */
+    private double farthestParkedBefore(double before, double laneCentre) {
+        return farthestParkedBefore(before, laneCentre, 0);
+    }
+
+    private double farthestParkedBefore(double before, double laneCentre, double from) {
+        Lidar lidar = car.lidar();
+        double farthest = Double.NaN;
+        for (int h = 0; h < lidar.hits(); h++) {
+            double u = lidar.u(h);
+            if (lidar.isParkedCar(h) && u > from && u < before && Math.abs(lidar.v(h) - laneCentre) < 1.4) {
+                farthest = Double.isNaN(farthest) ? u : Math.max(farthest, u);
+            }
+        }
+        return farthest;
     }
 
     /** Distance to the nearest parked car inside the width the car sweeps ahead of it, or NaN. */

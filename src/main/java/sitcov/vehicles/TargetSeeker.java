@@ -32,7 +32,9 @@ final class TargetSeeker {
         Target target = car.scene().target();
         double u = LaneFrame.u(lane, car.x(), car.y(), target.position().x(), target.position().y());
         double v = LaneFrame.v(lane, car.x(), car.y(), target.position().x(), target.position().y());
-        if (u < -1 || u > SEEK_DISTANCE) {
+        if (u < 0 || u > SEEK_DISTANCE) {
+            // a Target passed without reaching it (it lay too far to the side) is not stood beside
+            // for ever: the car drives on and comes round again
             return;
         }
         // turning through a junction the lane frame means little, and passing parked cars the car

@@ -74,16 +74,18 @@ final class Body {
 
     /**
      * The footprint ({@code length} by {@code width}) this body would have after one tick of
-     * {@link #approachSpeed}, {@link #turnTowards} and {@link #move}, leaving the body as it is.
+     * {@link #approachSpeed}, {@link #turnTowards} and {@link #move}, leaving the body as it is,
+     * stretched forward by the distance it would then need to stop.
      */
-    Box footprintAfter(double targetSpeed, double bearing, double maxTurn, double length, double width) {
+    Box reachAfter(double targetSpeed, double bearing, double maxTurn, double length, double width) {
         double turn = Math.max(-maxTurn, Math.min(maxTurn, Bearing.turn(heading, bearing)));
         double h = Bearing.normalise(heading + turn);
         double nx = x - pivot * Bearing.dx(heading) + pivot * Bearing.dx(h);
         double ny = y - pivot * Bearing.dy(heading) + pivot * Bearing.dy(h);
         double v = speedAfter(targetSpeed);
+        double reach = v + Math.max(0, Dynamics.stoppingDistance(v) - v);
         double r = Math.toRadians(h);
-        return Box.behind(nx + v * Math.sin(r), ny + v * Math.cos(r), h, length, width);
+        return Box.behind(nx + reach * Math.sin(r), ny + reach * Math.cos(r), h, length + reach - v, width);
     }
 
     /** Turns towards {@code bearing} by at most {@code maxTurn} degrees. */

@@ -116,9 +116,13 @@ public final class MovingCar implements Vehicle, Steppable {
         limit = Math.min(limit, keepDistance(stoppedFor > IMPATIENCE));
         stoppedFor = body.speed() < 0.01 ? stoppedFor + 1 : 0;
         releaseJunctionIfLeft();
-        if (wouldTouch(body.footprintAfter(limit, bearing, Dynamics.MAX_TURN, length(), width()))) {
-            // a driver who sees that the next move would touch someone stands on the brake
-            body.stop();
+        if (wouldTouch(body.reachAfter(limit, bearing, Dynamics.MAX_TURN, length(), width()))) {
+            // a driver who sees that the next move would leave no room to stop short of someone makes
+            // an emergency stop (twice the planned braking, about 8 m/s²) and holds the wheel; it is
+            // still bounded, so a car that cuts in close at speed can be hit
+            body.brake();
+            body.brake();
+            body.move();
             return;
         }
         body.approachSpeed(limit);

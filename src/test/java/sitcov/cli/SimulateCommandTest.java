@@ -147,16 +147,17 @@ class SimulateCommandTest {
     @Test
     void theGalleryDrawsEveryRunThatWentWrongAndNoOther() throws Exception {
         Path gallery = folder.resolve("gallery");
-        CliRunner r = CliRunner.run("simulate", "--maps", "150", "--summary", "--gallery", gallery.toString());
+        CliRunner r = CliRunner.run("simulate", "--maps", "150", "--seed", "280", "--summary", "--gallery",
+                gallery.toString());
         assertEquals(0, r.exitCode(), r.err());
         List<String> expected = new java.util.ArrayList<>();
-        for (long seed = 1; seed <= 150; seed++) {
+        for (long seed = 280; seed < 430; seed++) {
             sitcov.oracle.RunResult run = sitcov.experiment.Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
             if (run.hasAccident() || run.outcome() == sitcov.oracle.Outcome.TIMEOUT) {
                 expected.add(Long.toString(seed));
             }
         }
-        assertTrue(expected.size() >= 2, "maps 1..150 should hold runs that went wrong: " + expected);
+        assertTrue(expected.size() >= 2, "maps 280..429 should hold runs that went wrong: " + expected);
         List<String> index = Files.readAllLines(gallery.resolve("index.csv"));
         assertEquals(expected, index.stream().skip(1).map(l -> l.split(",")[1]).toList());
         for (String row : index.subList(1, index.size())) {

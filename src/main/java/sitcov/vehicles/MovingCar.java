@@ -40,10 +40,6 @@ public final class MovingCar implements Vehicle, Steppable {
      * replaced at a dead end: traffic never locks up for good, around the autonomous car or not.
      */
     static final int GIVE_UP = 50;
-    /** Room kept round the autonomous car: traffic never touches it. */
-    static final double CLEARANCE = 0.3;
-    /** Anything whose anchor is further than this (squared, metres) cannot be touched in one tick. */
-    private static final double NEAR_SQ = 12 * 12;
     /** Its rear axle, which it turns about, is this far behind its front. */
     static final double REAR_AXLE = 3.5;
 
@@ -116,7 +112,7 @@ public final class MovingCar implements Vehicle, Steppable {
         limit = Math.min(limit, keepDistance(stoppedFor > IMPATIENCE));
         stoppedFor = body.speed() < 0.01 ? stoppedFor + 1 : 0;
         releaseJunctionIfLeft();
-        if (wouldTouch(body.reachAfter(limit, bearing, Dynamics.MAX_TURN, length(), width()))) {
+        if (Clearance.wouldTouch(scene, this, body.reachAfter(limit, bearing, Dynamics.MAX_TURN, length(), width()))) {
             // a driver who sees that the next move would leave no room to stop short of someone makes
             // an emergency stop (twice the planned braking, about 8 m/s²) and holds the wheel; it is
             // still bounded, so a car that cuts in close at speed can be hit
@@ -128,46 +124,6 @@ public final class MovingCar implements Vehicle, Steppable {
         body.approachSpeed(limit);
         body.turnTowards(bearing, Dynamics.MAX_TURN);
         body.move();
-    }
-
-    /**
-     * Whether the footprint {@code next} would touch another vehicle or a parked car that the car
-     * does not touch already (a car already entangled may move off), or come within
-     * {@link #CLEARANCE} of the autonomous car.
-     */
-    private boolean wouldTouch(Box next) {
-        Box now = null;
-        for (Vehicle other : scene.vehicles()) {
-            if (other == this || !other.isActive() || isFar(other.x(), other.y())) {
-                continue;
-            }
-            Box theirs = other.id() == AutonomousCar.ID
-                    ? Box.behind(other.x() + CLEARANCE * Bearing.dx(other.heading()),
-                            other.y() + CLEARANCE * Bearing.dy(other.heading()), other.heading(),
-                            other.length() + 2 * CLEARANCE, other.width() + 2 * CLEARANCE)
-                    : other.footprint();
-            if (next.overlaps(theirs)) {
-                now = now == null ? footprint() : now;
-                if (!now.overlaps(theirs)) {
-                    return true;
-                }
-            }
-        }
-        for (Box parked : scene.parkedBodies()) {
-            if (!isFar(parked.centre().x(), parked.centre().y()) && next.overlaps(parked)) {
-                now = now == null ? footprint() : now;
-                if (!now.overlaps(parked)) {
-                    return true;
-                }
-            }
-        }
-        return false;
-    }
-
-    private boolean isFar(double ox, double oy) {
-        double dx = ox - body.x();
-        double dy = oy - body.y();
-        return dx * dx + dy * dy > NEAR_SQ;
     }
 
     private double approachJunction(Road road) {

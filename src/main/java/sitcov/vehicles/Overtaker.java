@@ -3,7 +3,9 @@ package sitcov.vehicles;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
 import sitcov.geom.Bearing;
+import sitcov.geom.Box;
 import sitcov.geom.Compass;
+import sitcov.world.Dimensions;
 
 /**
  * Passing parked cars (reference §3.7): seeing a parked car ahead in its lane, the car pulls out
@@ -36,6 +38,16 @@ final class Overtaker {
     static final double GAP_BEYOND_TARGET = 0.8;
     /** The shortest way back into the lane, at the tight passing speed. */
     static final double TIGHT_RETURN = 2.5;
+    /** A Target closer than the tight return past the row, but at least this far, is turned in to sharply. */
+    static final double SHARP_RETURN = 1.0;
+    /** How far past the row's end the car's front goes before it turns in sharply: its tail then clears the row. */
+    static final double SHARP_CLEARANCE = 0.7;
+    /** How far the car keeps its tail from the row's end it saw: the LIDAR sees that end only to a few tenths. */
+    static final double TAIL_MARGIN = 0.6;
+    /** Where the side of a row of parked cars lies, from the lane's centre towards the other lane, with a margin. */
+    static final double ROW_FACE = 1.0;
+    /** How deep, from its side to the kerb, the row is taken to be. */
+    static final double ROW_DEPTH = 3;
 
     private final AutonomousCar car;
     private final FaultSwitchboard faults;
@@ -43,6 +55,9 @@ final class Overtaker {
     private int waypoint;
     private double oppositeStart = Double.NaN;
     private boolean toTarget;
+    private boolean sharp;
+    /** Where the row ends, as a coordinate along the road, while turning in sharply at the Target. */
+    private double rowEndAlong = Double.NaN;
     private Compass lane;
 
     Overtaker(AutonomousCar car, FaultSwitchboard faults) {
@@ -114,6 +129,10 @@ final class Overtaker {
             return;
         }
         intent.limit(Double.isNaN(oppositeStart) && !toTarget ? PASSING_SPEED : TIGHT_SPEED, "overtaking");
+        if (sharp && stage == OvertakingStage.FINISH) {
+            turnInAtTarget(intent, laneCentre);
+            return;
+        }
         double blocked = parkedCarInTheWay();
         if (!Double.isNaN(blocked)) {
             intent.stopWithin(blocked - 0.7, "overtaking");
@@ -172,28 +191,21 @@ final class Overtaker {
                             Waypoint.Kind.OVERTAKE_START);
                     return;
                 }
-                double out = farthest + BUFFER + 1;
-                double target = targetAheadInLane(laneCentre);
-                // the Target may lie in a gap of the row: what matters is the row up to the Target
-                double before = farthestParkedBefore(target, laneCentre);
-                double rowEnd = Double.isNaN(before) ? farthest : before;
-                if (target > rowEnd + TIGHT_RETURN && target < rowEnd + BUFFER + 1 + HEADWAY + TargetSeeker.CAPTURE_DISTANCE
-                        && Double.isNaN(farthestParkedBefore(target + GAP_BEYOND_TARGET, laneCentre, target))) {
-                    // the Target lies just past the row, with room to get in before it: stay out only
-                    // until the row is passed, then pull in at it (closer than that it cannot be reached)
-                    out = Math.max(rowEnd + BUFFER, Math.min(rowEnd + BUFFER + 1, target - TIGHT_RETURN));
-                    toTarget = true;
-                }
+                double out = pulledOutUntil(farthest, laneCentre);
                 replace(out, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
                 stage = OvertakingStage.PULLED_OUT;
             }
             case PULLED_OUT -> {
+                if (sharp) {
+                    stage = OvertakingStage.FINISH;
+                    return;
+                }
                 Sighting s = look(laneCentre);
                 boolean rowBeforeTarget = !toTarget
                         || !Double.isNaN(farthestParkedBefore(targetAheadInLane(laneCentre), laneCentre));
                 if (!Double.isNaN(s.farthest) && s.farthest > 0 && rowBeforeTarget) {
                     // another parked car came into view beyond the one passed: keep passing
-                    replace(s.farthest + BUFFER + 1, laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
+                    replace(pulledOutUntil(s.farthest, laneCentre), laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
                     return;
                 }
                 double back = HEADWAY;
@@ -220,6 +232,36 @@ final class Overtaker {
         }
     }
 
+    /**
+     * How far ahead the car stays out to pass a row whose farthest seen car is {@code farthest}
+     * ahead, and whether it then pulls in at a Target just past the row.
+     */
+    private double pulledOutUntil(double farthest, double laneCentre) {
+        double out = farthest + BUFFER + 1;
+        double target = targetAheadInLane(laneCentre);
+        // the Target may lie in a gap of the row: what matters is the row up to the Target
+        double before = farthestParkedBefore(target, laneCentre);
+        double rowEnd = Double.isNaN(before) ? farthest : before;
+        if (!Double.isNaN(farthestParkedBefore(target + GAP_BEYOND_TARGET, laneCentre, target))) {
+            return out;
+        }
+        if (target > rowEnd + TIGHT_RETURN && target < rowEnd + BUFFER + 1 + HEADWAY + TargetSeeker.CAPTURE_DISTANCE) {
+            // the Target lies just past the row, with room to get in before it: stay out only
+            // until the row is passed, then pull in at it
+            toTarget = true;
+            return Math.max(rowEnd + BUFFER, Math.min(rowEnd + BUFFER + 1, target - TIGHT_RETURN));
+        }
+        if (target > rowEnd + SHARP_RETURN && target <= rowEnd + TIGHT_RETURN) {
+            // too close past the row for a tight return: the car turns in sharply at it once its
+            // tail is past the row, as a driver squeezes in ahead of a parked car
+            toTarget = true;
+            sharp = true;
+            rowEndAlong = along() + rowEnd * Lanes.forwardSign(lane);
+            return rowEnd + SHARP_CLEARANCE;
+        }
+        return out;
+    }
+
     /** Metres from the car to the parked car on the other side that the pass must end before. */
     private double oppositeRemaining() {
         return (oppositeStart - along()) * Lanes.forwardSign(lane);
@@ -234,6 +276,48 @@ final class Overtaker {
         stage = OvertakingStage.NOT_OVERTAKING;
         oppositeStart = Double.NaN;
         toTarget = false;
+        sharp = false;
+        rowEndAlong = Double.NaN;
+    }
+
+    /** Heads straight for the Target, slowing to stop on it; a Target missed ends the manoeuvre. */
+    private void turnInAtTarget(Intent intent, double laneCentre) {
+        var target = car.scene().target().position();
+        double u = LaneFrame.u(lane, car.x(), car.y(), target.x(), target.y());
+        if (u < -TargetSeeker.CAPTURE_DISTANCE) {
+            end();
+            return;
+        }
+        intent.stopWithin(target.distanceTo(car.x(), car.y()), "overtaking");
+        double rowEnd = (rowEndAlong - along()) * Lanes.forwardSign(lane);
+        double face = laneCentre + ROW_FACE;
+        double heading = car.heading();
+        double toward = Bearing.turn(heading, Bearing.between(car.x(), car.y(), target.x(), target.y()));
+        double step = Math.max(-Dynamics.MAX_TURN, Math.min(Dynamics.MAX_TURN, toward));
+        double speed = Math.min(car.speed() + Dynamics.ACCELERATION, TIGHT_SPEED);
+        // the car turns about its rear axle, swinging its tail towards the row: it turns in only as
+        // far as keeps that tail clear of the row's end, straightening up while it is not
+        double bearing = heading + step;
+        if (!tailClear(bearing, speed, rowEnd, face)) {
+            bearing = tailClear(heading, speed, rowEnd, face) ? heading : lane.bearing();
+        }
+        intent.steer(bearing, "overtaking");
+    }
+
+    /**
+     * Whether the car's footprint after turning to {@code bearing} (about its rear axle) and moving
+     * {@code speed} keeps clear of the row: everything short of its end and beyond its side, with margins.
+     */
+    private boolean tailClear(double bearing, double speed, double rowEnd, double face) {
+        double pivot = AutonomousCar.REAR_AXLE;
+        double nx = car.x() - pivot * Bearing.dx(car.heading()) + (pivot + speed) * Bearing.dx(bearing);
+        double ny = car.y() - pivot * Bearing.dy(car.heading()) + (pivot + speed) * Bearing.dy(bearing);
+        Box next = Box.behind(nx, ny, bearing, Dimensions.AUTONOMOUS_CAR_LENGTH, Dimensions.AUTONOMOUS_CAR_WIDTH);
+        double u = rowEnd + TAIL_MARGIN;
+        double v = face - ROW_DEPTH / 2;
+        Box row = Box.behind(LaneFrame.x(lane, car.x(), u, v), LaneFrame.y(lane, car.y(), u, v), lane.bearing(),
+                PARKED_CAR_LENGTH, ROW_DEPTH);
+        return !next.overlaps(row);
     }
 
     /** Where the Target lies across the lane frame, from the car. */

@@ -163,4 +163,16 @@ class AutonomousCarBehaviourTest {
             assertEquals(List.of(), result.accidents(), "seed " + seed);
         }
     }
+
+    @Test
+    void itSqueezesInAtATargetTooCloseBeyondAParkedCarForATightReturn() {
+        // map 174: the Target lies 1.8 m past a lone parked car's front; map 10894: 2 m past the last
+        // car of a row, seen only once pulled out. Both timed out: the car passed the Target in the
+        // other lane and circled. It now turns in once its tail is clear of the row, and stops on it.
+        for (long seed : new long[] {174, 10894}) {
+            RunResult result = Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
+            assertEquals(Outcome.TARGET_REACHED, result.outcome(), "seed " + seed + ": " + result);
+            assertEquals(List.of(), result.accidents(), "seed " + seed);
+        }
+    }
 }

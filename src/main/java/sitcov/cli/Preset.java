@@ -13,6 +13,7 @@ import sitcov.coverage.GridDefinition;
 import sitcov.experiment.BudgetKind;
 import sitcov.experiment.Drivers;
 import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.FaultyRuns;
 import sitcov.faults.FaultSet;
 
 /**
@@ -21,7 +22,7 @@ import sitcov.faults.FaultSet;
  */
 record Preset(Path file, ExperimentConfig config) {
     private static final Set<String> KEYS = Set.of("name", "master_seed", "candidates", "replications", "faults", "budget",
-            "grid", "description", "sweep", "drivers", "candidate_limit");
+            "faulty_runs", "grid", "description", "sweep", "drivers", "candidate_limit");
 
     static Path locate(String nameOrFile) throws UsageException {
         Path direct = Path.of(nameOrFile);
@@ -88,11 +89,13 @@ record Preset(Path file, ExperimentConfig config) {
             String limit = p.getProperty("candidate_limit");
             int candidateLimit = limit == null ? ExperimentConfig.defaultCandidateLimit(candidates, sweep)
                     : Integer.parseInt(limit.strip());
+            field = "faulty_runs";
+            FaultyRuns faultyRuns = FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.UNTIL_VERDICT.key()).strip());
             field = "grid";
             String gridFile = p.getProperty("grid");
             GridDefinition grid = gridFile == null ? GridDefinition.paper() : GridDefinition.read(Path.of(gridFile.strip()));
             return new ExperimentConfig(name, seed, candidates, replications, faults, budget, grid, drivers, sweep,
-                    candidateLimit);
+                    candidateLimit, faultyRuns);
         } catch (IOException e) {
             throw new UsageException("run: " + file + ": cannot read its grid: " + e.getMessage());
         } catch (NumberFormatException e) {

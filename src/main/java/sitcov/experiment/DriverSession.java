@@ -28,6 +28,9 @@ public final class DriverSession {
     private final List<Journal.Entry> replay;
     private final Optional<Journal.Finished> finishedBefore;
     private final Driver self;
+    private final java.util.Map<MapId, SharedMap> shared;
+    /** Wall time charged for maps another driver of the replication judged: as if this driver had run them. */
+    private long creditedNanos;
     private int drawn;
     private int mapsRun;
     private long ticks;
@@ -38,7 +41,8 @@ public final class DriverSession {
     private int liveMaps;
 
     DriverSession(ExperimentRunner host, PlannedReplication replication, String driver, int driverIndex, Budget budget,
-                  Journal journal, Driver self) {
+                  Journal journal, Driver self, java.util.Map<MapId, SharedMap> shared) {
+        this.shared = shared;
         this.host = host;
         this.replication = replication.index();
         this.driver = driver;
@@ -135,9 +139,18 @@ public final class DriverSession {
             return run;
         }
         long start = host.nanoTime();
-        WorldMap world = map.get();
         long internal = SeedPlan.internalSeed(host.config().masterSeed(), id);
-        JudgedMap judged = MapRunner.judge(world, internal, host.faults());
+        SharedMap judgedBefore = shared.get(id);
+        WorldMap world;
+        JudgedMap judged;
+        if (judgedBefore != null) {
+            // the same map and seeds run the same: judged once, charged to every driver that runs it
+            world = judgedBefore.world();
+            judged = judgedBefore.judged();
+        } else {
+            world = map.get();
+            judged = MapRunner.judge(world, internal, host.faults(), host.config().faultyRuns());
+        }
         List<Double> values = new ArrayList<>(criteria.length);
         for (double v : criteria) {
             values.add(v);
@@ -146,6 +159,12 @@ public final class DriverSession {
                 RunSummary.of(judged.faultFree()), judged.verdicts().stream().map(FaultOutcome::of).toList());
         charge(run);
         long nanos = host.nanoTime() - start;
+        if (judgedBefore != null) {
+            creditedNanos += judgedBefore.nanos() - nanos;
+            nanos = judgedBefore.nanos();
+        } else {
+            shared.put(id, new SharedMap(world, judged, nanos));
+        }
         liveMapNanos += nanos;
         liveMaps++;
         host.emit(new ExperimentEvent.MapJudged(run, built, false, nanos, elapsedNanos(), driverIndex, progress()));
@@ -163,7 +182,11 @@ public final class DriverSession {
         if (mapsRun < replay.size()) {
             return mapsRun == 0 ? 0 : replay.get(mapsRun - 1).driverNanos();
         }
-        return elapsedOffset + host.nanoTime() - liveSince;
+        return elapsedOffset + host.nanoTime() - liveSince + creditedNanos;
+    }
+
+    /** A map one driver of a replication judged, kept for the others, with the wall time it took. */
+    record SharedMap(WorldMap world, JudgedMap judged, long nanos) {
     }
 
     /** How much of its budget the driver has spent, 0..1. */
@@ -199,7 +222,7 @@ public final class DriverSession {
             return 0;
         }
         double perMap = (double) liveMapNanos / liveMaps;
-        double perCandidate = Math.max(0, elapsedOffset + host.nanoTime() - liveSince - liveMapNanos) / (double) drawn;
+        double perCandidate = Math.max(0, elapsedNanos() - liveMapNanos) / (double) drawn;
         return perCandidate / perMap;
     }
 

@@ -15,7 +15,7 @@ import sitcov.faults.Fault;
  */
 public record ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
                                BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
-                               int candidateLimit) {
+                               int candidateLimit, FaultyRuns faultyRuns) {
     public static final List<String> PAPER_DRIVERS = List.of("coverage-filter", "random");
 
     public ExperimentConfig {
@@ -33,16 +33,17 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
             throw new IllegalArgumentException("candidate_limit " + candidateLimit + " is below the first driver's "
                     + largest + " candidates");
         }
+        java.util.Objects.requireNonNull(faultyRuns, "faultyRuns");
         faults = Set.copyOf(faults);
         drivers = List.copyOf(drivers);
         sweep = List.copyOf(sweep);
     }
 
-    /** The paper's two drivers, no sweep, and a candidate limit ten times the first driver's candidates. */
+    /** The paper's two drivers, no sweep, a candidate limit ten times the first driver's candidates, faulty runs until their verdict. */
     public ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
                             BudgetKind budget, GridDefinition grid) {
         this(name, masterSeed, candidates, replications, faults, budget, grid, PAPER_DRIVERS, List.of(),
-                defaultCandidateLimit(candidates, List.of()));
+                defaultCandidateLimit(candidates, List.of()), FaultyRuns.UNTIL_VERDICT);
     }
 
     /** Ten times the largest candidate budget of the first driver: later drivers that run few maps still stop. */

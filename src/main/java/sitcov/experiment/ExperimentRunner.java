@@ -1,7 +1,9 @@
 package sitcov.experiment;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -90,12 +92,14 @@ public final class ExperimentRunner {
     private void runReplication(PlannedReplication p) {
         DriverSpend first = null;
         long firstNanos = 0;
+        // drivers of a replication read the same candidates: a map two of them run is judged once
+        Map<MapId, DriverSession.SharedMap> shared = new HashMap<>();
         for (int d = 0; d < config.drivers().size(); d++) {
             String name = config.drivers().get(d);
             Budget budget = d == 0 ? Budget.candidates(p.candidates())
                     : Budget.after(config.budget(), first, firstNanos, config.candidateLimit());
             Driver driver = drivers.create(name);
-            DriverSession session = new DriverSession(this, p, name, d, budget, journal, driver);
+            DriverSession session = new DriverSession(this, p, name, d, budget, journal, driver, shared);
             driver.drive(session);
             Journal.Finished done = session.finish();
             emit(new ExperimentEvent.DriverDone(done.spend(), d, session.wasFinishedBefore(), done.driverNanos()));

@@ -16,12 +16,19 @@ public final class MapRunner {
     private MapRunner() {
     }
 
-    /** Judges every fault of {@code faults}, in the list's order. */
+    /** Judges every fault of {@code faults}, in the list's order, each faulty run driven to its end. */
     public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults) {
+        return judge(map, internalSeed, faults, FaultyRuns.TO_END);
+    }
+
+    /** Judges every fault of {@code faults}, in the list's order, each faulty run as long as {@code length} says. */
+    public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length) {
         RunResult faultFree = Simulator.run(map, internalSeed);
         List<FaultVerdict> verdicts = new ArrayList<>(faults.size());
         for (Fault fault : faults) {
-            RunRecord faulty = Simulator.run(map, internalSeed, EnumSet.of(fault), RunObserver.NONE);
+            RunRecord faulty = length == FaultyRuns.UNTIL_VERDICT
+                    ? Simulator.runUntilVerdict(map, internalSeed, EnumSet.of(fault), faultFree)
+                    : Simulator.run(map, internalSeed, EnumSet.of(fault), RunObserver.NONE);
             verdicts.add(DifferentialOracle.judge(faultFree, faulty, fault));
         }
         return new JudgedMap(faultFree, verdicts);

@@ -23,6 +23,16 @@ public final class Simulator {
     }
 
     public static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer) {
+        return run(map, internalSeed, faults, observer, null);
+    }
+
+    /** A faulty run stopped once its verdict against {@code faultFree} (same map and seeds) is settled. */
+    static RunRecord runUntilVerdict(WorldMap map, long internalSeed, Set<Fault> faults, RunResult faultFree) {
+        return run(map, internalSeed, faults, RunObserver.NONE, new VerdictWatch(faultFree));
+    }
+
+    private static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer,
+                                 VerdictWatch watch) {
         SimState state = new SimState(internalSeed);
         FaultSwitchboard switchboard = new FaultSwitchboard(faults, state::tick);
         Scene scene = Scene.start(map, state, switchboard);
@@ -30,6 +40,9 @@ public final class Simulator {
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
         while (state.step()) {
             observer.afterTick(state.tick(), scene, detector);
+            if (watch != null && watch.settled(detector)) {
+                detector.stopAtVerdict(state);
+            }
         }
         RunResult result = new RunResult(map.seed(), internalSeed, detector.outcome(), detector.accidents(),
                 detector.excusedContacts(), detector.ticks());

@@ -96,6 +96,18 @@ public final class AccidentDetector implements Steppable {
         state.schedule().clear();
     }
 
+    /** Ends the run after the current tick, its verdict settled (only an experiment's faulty runs are stopped). */
+    public void stopAtVerdict(SimState state) {
+        if (outcome == null) {
+            finish(state, Outcome.STOPPED_AT_VERDICT, state.tick());
+        }
+    }
+
+    /** How many accidents so far (cheaper than {@link #accidents()} when polled every tick). */
+    public int accidentCount() {
+        return accidents.size();
+    }
+
     /** Accidents so far, in the order they happened. */
     public List<Accident> accidents() {
         return Collections.unmodifiableList(accidents);

@@ -21,13 +21,7 @@ public final class NewAccidents {
         List<Accident> unmatched = new ArrayList<>(baseline.accidents());
         List<Accident> fresh = new ArrayList<>();
         for (Accident a : run.accidents()) {
-            Accident match = null;
-            for (Accident b : unmatched) {
-                if (same(a, b)) {
-                    match = b;
-                    break;
-                }
-            }
+            Accident match = firstSame(unmatched, a);
             if (match == null) {
                 fresh.add(a);
             } else {
@@ -35,6 +29,16 @@ public final class NewAccidents {
             }
         }
         return fresh;
+    }
+
+    /** The first of {@code baseline} that is the same accident as {@code a}, or null. */
+    public static Accident firstSame(List<Accident> baseline, Accident a) {
+        for (Accident b : baseline) {
+            if (same(a, b)) {
+                return b;
+            }
+        }
+        return null;
     }
 
     private static boolean same(Accident a, Accident b) {

@@ -19,6 +19,7 @@ import java.util.TreeMap;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.BudgetKind;
 import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.FaultyRuns;
 import sitcov.experiment.Shard;
 import sitcov.faults.FaultSet;
 
@@ -60,6 +61,7 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         m.put("faults", FaultSet.format(c.faults()));
         m.put("budget", c.budget().key());
         m.put("candidate_limit", Integer.toString(c.candidateLimit()));
+        m.put("faulty_runs", c.faultyRuns().key());
         m.put("grid", ResultsFolder.GRID);
         m.put("grid_sha256", sha256(c.grid().format()));
         return m;
@@ -110,7 +112,9 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
             ExperimentConfig config = new ExperimentConfig(required(p, "preset"), Long.parseLong(required(p, "master_seed")),
                     Integer.parseInt(required(p, "candidates")), Integer.parseInt(required(p, "replications")),
                     FaultSet.parse(required(p, "faults")), BudgetKind.ofKey(required(p, "budget")), grid,
-                    List.of(required(p, "drivers").split(",")), sweep, Integer.parseInt(required(p, "candidate_limit")));
+                    List.of(required(p, "drivers").split(",")), sweep, Integer.parseInt(required(p, "candidate_limit")),
+                    // folders written before faulty runs could stop at their verdict ran them to the end
+                    FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.TO_END.key())));
             Shard shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
             return new Manifest(config, required(p, "sitcov_version"), shard,
                     Boolean.parseBoolean(required(p, "complete")), Boolean.parseBoolean(p.getProperty("resumed", "false")));

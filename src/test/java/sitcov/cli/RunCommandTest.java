@@ -29,6 +29,7 @@ class RunCommandTest {
         }
         String manifest = Files.readString(one.resolve(ResultsFolder.MANIFEST));
         assertTrue(manifest.contains("\nbudget=ticks\n") && manifest.contains("\ncomplete=true\n"), manifest);
+        assertTrue(manifest.contains("\nfaulty_runs=until-verdict\n"), "the default is recorded: " + manifest);
         assertTrue(manifest.contains("\ndrivers=coverage-filter,random\n"), manifest);
         assertTrue(a.out().contains("Results in " + one), a.out());
     }
@@ -105,6 +106,7 @@ class RunCommandTest {
             {"sweep=5,-1", "sweep= needs positive candidate counts"},
             {"candidate_limit=3", "candidate_limit 3 is below the first driver's 12 candidates"},
             {"budget=money", "unknown budget 'money'; use wall-clock or ticks"},
+            {"faulty_runs=sometimes", "unknown faulty_runs 'sometimes'; use until-verdict or to-end"},
         };
         String base = Files.readString(Path.of(ResultsFolders.TINY));
         for (String[] c : cases) {

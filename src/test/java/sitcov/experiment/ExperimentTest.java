@@ -14,7 +14,8 @@ import sitcov.faults.FaultSet;
 class ExperimentTest {
     // small enough for the test suite; faults 14 and 19 keep the faulty runs short
     private static final ExperimentConfig TINY = new ExperimentConfig("tiny", 42, 20, 2, FaultSet.parse("14,19"),
-            BudgetKind.TICKS, GridDefinition.paper(), List.of("coverage-filter", "random", "every-other"), List.of(), 200);
+            BudgetKind.TICKS, GridDefinition.paper(), List.of("coverage-filter", "random", "every-other"), List.of(), 200,
+            FaultyRuns.UNTIL_VERDICT);
 
     private static final List<ReplicationResult> RESULTS = ResultsCollector.run(TINY, Drivers.standard(), 1);
 
@@ -110,7 +111,7 @@ class ExperimentTest {
     void aLaterDriverThatRunsTooFewMapsStopsAtTheCandidateLimit() {
         // the filter reads the same 8 candidates as random but skips repeated cells, so it cannot spend as much
         ExperimentConfig config = new ExperimentConfig("limit", 42, 8, 1, FaultSet.parse("19"), BudgetKind.TICKS,
-                GridDefinition.paper(), List.of("random", "coverage-filter"), List.of(), 8);
+                GridDefinition.paper(), List.of("random", "coverage-filter"), List.of(), 8, FaultyRuns.UNTIL_VERDICT);
         ReplicationResult r = ResultsCollector.run(config, Drivers.standard(), 1).get(0);
         DriverSpend filter = r.of("coverage-filter").spend();
         assertEquals(StopReason.CANDIDATE_LIMIT, filter.stoppedBy());

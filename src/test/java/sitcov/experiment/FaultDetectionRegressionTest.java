@@ -25,7 +25,7 @@ import sitcov.world.WorldMap;
  * situation only shows that the fault really changes what the car does.
  */
 class FaultDetectionRegressionTest {
-    private static final Path FOLDER = Path.of("src", "test", "resources", "regression");
+    static final Path FOLDER = Path.of("src", "test", "resources", "regression");
 
     record Case(Fault fault, String file, long internalSeed, String expect) {
         String replay() {

@@ -15,6 +15,7 @@ import sitcov.experiment.BudgetKind;
 import sitcov.experiment.Candidate;
 import sitcov.experiment.Drivers;
 import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.FaultyRuns;
 import sitcov.experiment.ExperimentRunner;
 import sitcov.experiment.Journal;
 import sitcov.experiment.MapId;
@@ -43,7 +44,7 @@ class ResultsRecorderTest {
     @Test
     void aSituationADriverBuiltIsKeptInTheFolderAndNamedInRunsCsv() throws Exception {
         ExperimentConfig config = new ExperimentConfig("built", 5, 6, 1, FaultSet.parse("19"), BudgetKind.TICKS,
-                GridDefinition.paper(), List.of("builder"), List.of(), 6);
+                GridDefinition.paper(), List.of("builder"), List.of(), 6, FaultyRuns.UNTIL_VERDICT);
         Manifest manifest = new Manifest(config, "test", Shard.WHOLE, false, false);
         ResultsRecorder recorder = ResultsRecorder.create(dir, manifest, Map.of(), System::nanoTime);
         new ExperimentRunner(config, WITH_BUILDER, Shard.WHOLE, recorder.journal(), 1, System::nanoTime, List.of(recorder))
@@ -66,7 +67,7 @@ class ResultsRecorderTest {
     @Test
     void resultFilesAreReadableByOthers() throws Exception {
         ExperimentConfig config = new ExperimentConfig("modes", 5, 3, 1, FaultSet.parse("19"), BudgetKind.TICKS,
-                GridDefinition.paper(), List.of("random"), List.of(), 3);
+                GridDefinition.paper(), List.of("random"), List.of(), 3, FaultyRuns.UNTIL_VERDICT);
         ResultsRecorder recorder = ResultsRecorder.create(dir, new Manifest(config, "test", Shard.WHOLE, false, false),
                 Map.of(), System::nanoTime);
         new ExperimentRunner(config, Drivers.standard(), Shard.WHOLE, recorder.journal(), 1, System::nanoTime,

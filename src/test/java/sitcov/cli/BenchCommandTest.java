@@ -10,15 +10,17 @@ import org.junit.jupiter.api.Test;
 class BenchCommandTest {
 
     @Test
-    void aTinyBenchPrintsTicksRunsAndCandidateMapsPerSecond() {
-        CliRunner result = CliRunner.run("bench", "--maps", "1", "--candidates", "200");
+    void aTinyBenchPrintsTicksRunsCandidateMapsPerSecondAndSecondsPerJudgedMap() {
+        CliRunner result = CliRunner.run("bench", "--maps", "1", "--candidates", "200", "--judged", "2");
 
         assertEquals(ExitCode.OK, result.exitCode(), result.err());
         for (String measure : new String[] {"simulated ticks per second", "microseconds per tick", "runs per second",
-                "candidate maps per second", "seconds for 20000 candidates"}) {
+                "candidate maps per second", "seconds for 20000 candidates", "seconds a judged map, until verdict",
+                "seconds a judged map, to the end"}) {
             assertTrue(figure(result.out(), measure) > 0, measure);
         }
-        assertTrue(result.out().contains("< 20 with 15 moving cars"), result.out());
+        assertTrue(result.out().contains("<= 8 with 15 moving cars"), result.out());
+        assertTrue(result.out().contains("Judged maps: 1..2, each run fault-free and once per PAPER fault"), result.out());
     }
 
     @Test

@@ -51,6 +51,15 @@ public final class Box {
         return new Vec2(cx, cy);
     }
 
+    /** The centre's x, without making a point (hot loops read it). */
+    public double centreX() {
+        return cx;
+    }
+
+    public double centreY() {
+        return cy;
+    }
+
     public double bearing() {
         return bearing;
     }

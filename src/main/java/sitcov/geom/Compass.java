@@ -22,6 +22,9 @@ public enum Compass {
     }
 
     /** The x step of a unit move this way: −1, 0 or 1. */
+    /** values() copies its array on every call; turning is asked for every tick. */
+    private static final Compass[] ALL = values();
+
     public int dx() {
         return dx;
     }
@@ -32,17 +35,17 @@ public enum Compass {
     }
 
     public Compass opposite() {
-        return values()[(ordinal() + 2) % 4];
+        return ALL[(ordinal() + 2) % 4];
     }
 
     /** The direction 90° to the left for a driver heading this way. */
     public Compass left() {
-        return values()[(ordinal() + 3) % 4];
+        return ALL[(ordinal() + 3) % 4];
     }
 
     /** The direction 90° to the right for a driver heading this way. */
     public Compass right() {
-        return values()[(ordinal() + 1) % 4];
+        return ALL[(ordinal() + 1) % 4];
     }
 
     public boolean isNorthSouth() {

@@ -6,6 +6,7 @@ import sitcov.engine.Steppable;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
 import sitcov.geom.Bearing;
+import sitcov.geom.Box;
 import sitcov.geom.Compass;
 import sitcov.world.Dimensions;
 import sitcov.world.Road;
@@ -30,6 +31,8 @@ public final class AutonomousCar implements Vehicle, Steppable {
     private final Scene scene;
     private final FaultSwitchboard faults;
     private final Body body;
+    private Box keptClear;
+    private Box keptClearOf;
     private final CameraSettings cameraSettings;
     private final MarkingCamera camera;
     private final Lidar lidar;
@@ -246,6 +249,24 @@ public final class AutonomousCar implements Vehicle, Steppable {
     @Override
     public double length() {
         return Dimensions.AUTONOMOUS_CAR_LENGTH;
+    }
+
+    /** Its footprint grown by {@link Clearance#AROUND_THE_CAR} all round: where traffic keeps out. */
+    Box keptClear() {
+        Box now = footprint();
+        if (keptClearOf != now) {
+            double h = body.heading();
+            keptClear = Box.behind(body.x() + Clearance.AROUND_THE_CAR * Bearing.dx(h),
+                    body.y() + Clearance.AROUND_THE_CAR * Bearing.dy(h), h,
+                    length() + 2 * Clearance.AROUND_THE_CAR, width() + 2 * Clearance.AROUND_THE_CAR);
+            keptClearOf = now;
+        }
+        return keptClear;
+    }
+
+    @Override
+    public Box footprint() {
+        return body.footprint(length(), width());
     }
 
     @Override

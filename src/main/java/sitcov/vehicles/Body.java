@@ -15,6 +15,8 @@ final class Body {
     private double y;
     private double heading;
     private double speed;
+    /** The footprint last handed out, while the body has not moved since: most ticks ask for it many times. */
+    private Box footprint;
 
     Body(double x, double y, double heading, double pivot) {
         this.pivot = pivot;
@@ -39,7 +41,16 @@ final class Body {
         return speed;
     }
 
+    /** Its footprint ({@code length} by {@code width}, trailing its front centre); the same object until it moves. */
+    Box footprint(double length, double width) {
+        if (footprint == null || footprint.length() != length || footprint.width() != width) {
+            footprint = Box.behind(x, y, heading, length, width);
+        }
+        return footprint;
+    }
+
     void place(double nx, double ny, double nheading) {
+        footprint = null;
         x = nx;
         y = ny;
         heading = Bearing.normalise(nheading);
@@ -97,6 +108,7 @@ final class Body {
         }
         double px = x - pivot * Bearing.dx(heading);
         double py = y - pivot * Bearing.dy(heading);
+        footprint = null;
         heading = Bearing.normalise(heading + turn);
         x = px + pivot * Bearing.dx(heading);
         y = py + pivot * Bearing.dy(heading);
@@ -104,6 +116,9 @@ final class Body {
 
     /** Moves one tick along the heading at the current speed. */
     void move() {
+        if (speed != 0) {
+            footprint = null;
+        }
         double r = Math.toRadians(heading);
         x += speed * Math.sin(r);
         y += speed * Math.cos(r);

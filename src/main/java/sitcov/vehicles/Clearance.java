@@ -1,6 +1,5 @@
 package sitcov.vehicles;
 
-import sitcov.geom.Bearing;
 import sitcov.geom.Box;
 
 /** The check a moving car makes before each move, so that traffic keeps clear of everyone. */
@@ -20,15 +19,12 @@ final class Clearance {
      */
     static boolean wouldTouch(Scene scene, Vehicle self, Box next) {
         Box now = null;
-        for (Vehicle other : scene.vehicles()) {
+        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
+            Vehicle other = scene.vehicles().get(each);
             if (other == self || !other.isActive() || isFar(self, other.x(), other.y())) {
                 continue;
             }
-            Box theirs = other.id() == AutonomousCar.ID
-                    ? Box.behind(other.x() + AROUND_THE_CAR * Bearing.dx(other.heading()),
-                            other.y() + AROUND_THE_CAR * Bearing.dy(other.heading()), other.heading(),
-                            other.length() + 2 * AROUND_THE_CAR, other.width() + 2 * AROUND_THE_CAR)
-                    : other.footprint();
+            Box theirs = other instanceof AutonomousCar car ? car.keptClear() : other.footprint();
             if (next.overlaps(theirs)) {
                 now = now == null ? self.footprint() : now;
                 if (!now.overlaps(theirs)) {
@@ -36,12 +32,30 @@ final class Clearance {
                 }
             }
         }
-        for (Box parked : scene.parkedBodies()) {
-            if (!isFar(self, parked.centre().x(), parked.centre().y()) && next.overlaps(parked)) {
+        for (int each = 0, count = scene.parkedBodies().size(); each < count; each++) {
+            Box parked = scene.parkedBodies().get(each);
+            if (!isFar(self, parked.centreX(), parked.centreY()) && next.overlaps(parked)) {
                 now = now == null ? self.footprint() : now;
                 if (!now.overlaps(parked)) {
                     return true;
                 }
+            }
+        }
+        return false;
+    }
+
+    /** Whether anything {@link #wouldTouch} looks at is near: most ticks nothing is, and the reach need not be built. */
+    static boolean anyoneNear(Scene scene, Vehicle self) {
+        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
+            Vehicle other = scene.vehicles().get(each);
+            if (other != self && other.isActive() && !isFar(self, other.x(), other.y())) {
+                return true;
+            }
+        }
+        for (int each = 0, count = scene.parkedBodies().size(); each < count; each++) {
+            Box parked = scene.parkedBodies().get(each);
+            if (!isFar(self, parked.centreX(), parked.centreY())) {
+                return true;
             }
         }
         return false;

@@ -48,15 +48,17 @@ final class Lidar {
         double reachSq = (RANGE + 5) * (RANGE + 5);
         double fx = Math.sin(Math.toRadians(centreBearing));
         double fy = Math.cos(Math.toRadians(centreBearing));
-        for (Box body : scene.parkedBodies()) {
+        for (int each = 0, count = scene.parkedBodies().size(); each < count; each++) {
+            Box body = scene.parkedBodies().get(each);
             // the fan looks forward: a parked car wholly behind the sensor cannot be hit
-            double ahead = (body.centre().x() - x) * fx + (body.centre().y() - y) * fy;
+            double ahead = (body.centreX() - x) * fx + (body.centreY() - y) * fy;
             if (n < MAX_OBJECTS && ahead > -Dimensions.CAR_LENGTH && distanceSq(body, x, y) <= reachSq) {
                 objectParked[n] = true;
                 objects[n++] = body;
             }
         }
-        for (Vehicle v : scene.vehicles()) {
+        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
+            Vehicle v = scene.vehicles().get(each);
             if (v != self && v.isActive() && n < MAX_OBJECTS
                     && (v.x() - x) * (v.x() - x) + (v.y() - y) * (v.y() - y) <= reachSq) {
                 objectParked[n] = false;
@@ -149,8 +151,8 @@ final class Lidar {
 
 
     private static double distanceSq(Box body, double x, double y) {
-        double cx = body.centre().x() - x;
-        double cy = body.centre().y() - y;
+        double cx = body.centreX() - x;
+        double cy = body.centreY() - y;
         return cx * cx + cy * cy;
     }
 }

@@ -112,7 +112,8 @@ public final class MovingCar implements Vehicle, Steppable {
         limit = Math.min(limit, keepDistance(stoppedFor > IMPATIENCE));
         stoppedFor = body.speed() < 0.01 ? stoppedFor + 1 : 0;
         releaseJunctionIfLeft();
-        if (Clearance.wouldTouch(scene, this, body.reachAfter(limit, bearing, Dynamics.MAX_TURN, length(), width()))) {
+        if (Clearance.anyoneNear(scene, this)
+                && Clearance.wouldTouch(scene, this, body.reachAfter(limit, bearing, Dynamics.MAX_TURN, length(), width()))) {
             // a driver who sees that the next move would leave no room to stop short of someone makes
             // an emergency stop (twice the planned braking, about 8 m/s²) and holds the wheel; it is
             // still bounded, so a car that cuts in close at speed can be hit
@@ -193,7 +194,8 @@ public final class MovingCar implements Vehicle, Steppable {
         }
         double nearest = Double.MAX_VALUE;
         double end = Double.NaN;
-        for (var car : scene.parkedCars()) {
+        for (int each = 0, count = scene.parkedCars().size(); each < count; each++) {
+            sitcov.world.ParkedCar car = scene.parkedCars().get(each);
             if (car.roadId() != road.id() || road.laneDirectionAt(car.centre().x(), car.centre().y()) != lane) {
                 continue;
             }
@@ -219,7 +221,8 @@ public final class MovingCar implements Vehicle, Steppable {
 
     private boolean otherLaneClear(Road road, double along, int sign, double from, double to) {
         Compass other = lane.opposite();
-        for (var car : scene.parkedCars()) {
+        for (int each = 0, count = scene.parkedCars().size(); each < count; each++) {
+            sitcov.world.ParkedCar car = scene.parkedCars().get(each);
             if (car.roadId() == road.id() && road.laneDirectionAt(car.centre().x(), car.centre().y()) == other) {
                 double ahead = (road.along(car.centre().x(), car.centre().y()) - along) * sign;
                 if (ahead > from - 8 && ahead < to + 3) {
@@ -231,7 +234,8 @@ public final class MovingCar implements Vehicle, Steppable {
         if (next != null && Lanes.distanceToSquare(next, lane, body.x(), body.y()) < to + 3) {
             return false;
         }
-        for (Vehicle v : scene.vehicles()) {
+        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
+            Vehicle v = scene.vehicles().get(each);
             if (v == this || !v.isActive() || !road.contains(v.x(), v.y())) {
                 continue;
             }
@@ -260,7 +264,8 @@ public final class MovingCar implements Vehicle, Steppable {
         double fx = Bearing.dx(body.heading());
         double fy = Bearing.dy(body.heading());
         double limit = Dynamics.MAX_SPEED;
-        for (Vehicle other : scene.vehicles()) {
+        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
+            Vehicle other = scene.vehicles().get(each);
             if (other == this || !other.isActive()
                     || (impatient && other.speed() == 0 && other.id() != AutonomousCar.ID)) {
                 continue;
@@ -313,7 +318,8 @@ public final class MovingCar implements Vehicle, Steppable {
         if (scene.occupancy().holder(j.id()) >= 0) {
             return;
         }
-        for (Vehicle v : scene.vehicles()) {
+        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
+            Vehicle v = scene.vehicles().get(each);
             if (v != this && v.isActive() && v.footprint().overlaps(candidate.bounds().expanded(2))) {
                 return;
             }
@@ -355,6 +361,11 @@ public final class MovingCar implements Vehicle, Steppable {
     @Override
     public double length() {
         return Dimensions.CAR_LENGTH;
+    }
+
+    @Override
+    public Box footprint() {
+        return body.footprint(length(), width());
     }
 
     @Override

@@ -31,6 +31,9 @@ public final class Scene {
     private final SimState state;
     private final List<MovingCar> movingCars = new ArrayList<>();
     private final List<Vehicle> vehicles = new ArrayList<>();
+    // read-only views made once: callers ask for them many times a tick
+    private final List<MovingCar> movingCarsView = Collections.unmodifiableList(movingCars);
+    private final List<Vehicle> vehiclesView = Collections.unmodifiableList(vehicles);
     private AutonomousCar autonomousCar;
 
     Scene(WorldMap map, SimState state) {
@@ -104,12 +107,12 @@ public final class Scene {
     }
 
     public List<MovingCar> movingCars() {
-        return Collections.unmodifiableList(movingCars);
+        return movingCarsView;
     }
 
     /** Every vehicle, the autonomous car first; check {@link Vehicle#isActive()} before using one. */
     public List<Vehicle> vehicles() {
-        return Collections.unmodifiableList(vehicles);
+        return vehiclesView;
     }
 
     /** Whether any active vehicle other than {@code self} has part of its footprint in the junction's square. */

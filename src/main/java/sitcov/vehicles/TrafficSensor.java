@@ -43,7 +43,8 @@ final class TrafficSensor {
         // the path ahead is judged along the car's own heading (it may be turning); the lanes along the lane
         double hx = Bearing.dx(heading);
         double hy = Bearing.dy(heading);
-        for (Vehicle other : scene.vehicles()) {
+        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
+            Vehicle other = scene.vehicles().get(each);
             if (other == self || !other.isActive()) {
                 continue;
             }

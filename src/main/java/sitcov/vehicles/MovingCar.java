@@ -275,6 +275,11 @@ public final class MovingCar implements Vehicle, Steppable {
             if (ox * ox + oy * oy > FOLLOW_RANGE_SQ) {
                 continue;
             }
+            // the other's centre lies within half its length of its anchor: an anchor that far behind
+            // leaves the centre behind too, and the test below would skip it (saves the trigonometry)
+            if (ox * fx + oy * fy < -other.length() / 2 - 1e-9) {
+                continue;
+            }
             double delta = Math.toRadians(other.heading() - body.heading());
             double halfL = other.length() / 2;
             double cx = other.x() - halfL * Bearing.dx(other.heading()) - body.x();

@@ -17,6 +17,11 @@ final class Lanes {
         return right.dx() + right.dy();
     }
 
+    /** The coordinate of ({@code x}, {@code y}) along a road running in {@code direction}: it stays put while the car moves. */
+    static double along(Compass direction, double x, double y) {
+        return direction.isNorthSouth() ? y : x;
+    }
+
     /** +1 when driving {@code direction} increases the road's along coordinate, else −1. */
     static int forwardSign(Compass direction) {
         return direction.dx() + direction.dy();
@@ -43,7 +48,7 @@ final class Lanes {
 
     /** Distance ahead (along {@code direction}) from the point to the near edge of the junction square, which may be negative. */
     static double distanceToSquare(Junction junction, Compass direction, double x, double y) {
-        double along = direction.isNorthSouth() ? y : x;
+        double along = along(direction, x, y);
         double centre = direction.isNorthSouth() ? junction.centre().y() : junction.centre().x();
         return (centre - along) * forwardSign(direction) - Dimensions.HALF_ROAD;
     }

@@ -3,9 +3,7 @@ package sitcov.vehicles;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
 import sitcov.geom.Bearing;
-import sitcov.geom.Box;
 import sitcov.geom.Compass;
-import sitcov.world.Dimensions;
 
 /**
  * Passing parked cars (reference §3.7): seeing a parked car ahead in its lane, the car pulls out
@@ -20,10 +18,6 @@ final class Overtaker {
     static final double STRAIGHTENING = 0.3;
     static final double START_BEFORE = 3.5;
     static final double WAIT_GAP = 6;
-    /** Half the width the car sweeps, with a margin: a parked car inside it is in the car's way. */
-    static final double CORRIDOR = 1.15;
-    /** A car parked on the other side less than this far behind the car's front still stands beside it. */
-    static final double BESIDE = 2.5;
     /** How close to the parked car ahead the car may creep to get past one parked beside it. */
     static final double CREEP_GAP = 2.5;
     /** Blocked this close while out in the other lane, the car pulls back in, aiming this far ahead. */
@@ -40,29 +34,22 @@ final class Overtaker {
     static final double TIGHT_RETURN = 2.5;
     /** A Target closer than the tight return past the row, but at least this far, is turned in to sharply. */
     static final double SHARP_RETURN = 1.0;
-    /** How far past the row's end the car's front goes before it turns in sharply: its tail then clears the row. */
-    static final double SHARP_CLEARANCE = 0.7;
-    /** How far the car keeps its tail from the row's end it saw: the LIDAR sees that end only to a few tenths. */
-    static final double TAIL_MARGIN = 0.6;
-    /** Where the side of a row of parked cars lies, from the lane's centre towards the other lane, with a margin. */
-    static final double ROW_FACE = 1.0;
-    /** How deep, from its side to the kerb, the row is taken to be. */
-    static final double ROW_DEPTH = 3;
 
     private final AutonomousCar car;
     private final FaultSwitchboard faults;
+    private final SqueezeIn squeezeIn;
+    private final ParkedCarSightings sightings;
     private OvertakingStage stage = OvertakingStage.NOT_OVERTAKING;
     private int waypoint;
     private double oppositeStart = Double.NaN;
     private boolean toTarget;
-    private boolean sharp;
-    /** Where the row ends, as a coordinate along the road, while turning in sharply at the Target. */
-    private double rowEndAlong = Double.NaN;
     private Compass lane;
 
     Overtaker(AutonomousCar car, FaultSwitchboard faults) {
         this.car = car;
         this.faults = faults;
+        this.squeezeIn = new SqueezeIn(car);
+        this.sightings = new ParkedCarSightings(car, faults);
     }
 
     OvertakingStage stage() {
@@ -75,37 +62,37 @@ final class Overtaker {
             return;
         }
         lane = currentLane;
-        Sighting s = look(laneCentre);
-        if (Double.isNaN(s.nearest) || s.nearest > Lidar.RANGE) {
+        ParkedCarSightings.Sighting s = sightings.look(lane, laneCentre);
+        if (Double.isNaN(s.nearest()) || s.nearest() > Lidar.RANGE) {
             stage = OvertakingStage.NOT_OVERTAKING;
             return;
         }
         var target = car.scene().target().position();
         double targetU = LaneFrame.u(lane, car.x(), car.y(), target.x(), target.y());
         double targetV = LaneFrame.v(lane, car.x(), car.y(), target.x(), target.y());
-        if (targetU > -1 && targetU < s.nearest && Math.abs(targetV - laneCentre) < 1.6) {
+        if (targetU > -1 && targetU < s.nearest() && Math.abs(targetV - laneCentre) < 1.6) {
             // the Target comes before the parked car: reach it, do not pull out round the car
             stage = OvertakingStage.NOT_OVERTAKING;
             return;
         }
-        if (s.oppositeBeside) {
+        if (s.oppositeBeside()) {
             // a car parked on the other side right beside it: creep on past it before pulling out
-            intent.stopWithin(s.nearest - CREEP_GAP, "overtaking");
+            intent.stopWithin(s.nearest() - CREEP_GAP, "overtaking");
             return;
         }
-        intent.stopWithin(s.nearest - WAIT_GAP, "overtaking");
-        if (s.nearest > HEADWAY + car.speed()) {
+        intent.stopWithin(s.nearest() - WAIT_GAP, "overtaking");
+        if (s.nearest() > HEADWAY + car.speed()) {
             return;
         }
-        double passEnd = Math.max(s.farthest, s.nearest + PARKED_CAR_LENGTH) + BUFFER + 1;
+        double passEnd = Math.max(s.farthest(), s.nearest() + PARKED_CAR_LENGTH) + BUFFER + 1;
         double finish = passEnd + HEADWAY;
         boolean tight = false;
-        if (!Double.isNaN(s.opposite) && s.opposite < finish + BUFFER) {
-            if (s.opposite < passEnd + 2.5) {
+        if (!Double.isNaN(s.opposite()) && s.opposite() < finish + BUFFER) {
+            if (s.opposite() < passEnd + 2.5) {
                 stage = OvertakingStage.WAITING;
                 return;
             }
-            finish = s.opposite - 1;
+            finish = s.opposite() - 1;
             tight = true;
         }
         if (!oncomingLaneClear(laneCentre, finish)) {
@@ -113,10 +100,10 @@ final class Overtaker {
             return;
         }
         // remembered as a coordinate along the road, so it stays put while the car moves
-        oppositeStart = tight ? along() + s.opposite * Lanes.forwardSign(lane) : Double.NaN;
+        oppositeStart = tight ? along() + s.opposite() * Lanes.forwardSign(lane) : Double.NaN;
         // the start point is pulled out a little further than the pass itself: straightening up
         // afterwards swings the car's front (it turns about its rear axle) back towards the kerb
-        double u = Math.max(2, s.nearest - START_BEFORE);
+        double u = Math.max(2, s.nearest() - START_BEFORE);
         waypoint = createWaypoint(u, laneCentre + PULL_OUT + STRAIGHTENING, Waypoint.Kind.OVERTAKE_START);
         stage = OvertakingStage.START;
         pass(intent, laneCentre);
@@ -129,14 +116,16 @@ final class Overtaker {
             return;
         }
         intent.limit(Double.isNaN(oppositeStart) && !toTarget ? PASSING_SPEED : TIGHT_SPEED, "overtaking");
-        if (sharp && stage == OvertakingStage.FINISH) {
-            turnInAtTarget(intent, laneCentre);
+        if (squeezeIn.isOn() && stage == OvertakingStage.FINISH) {
+            if (!squeezeIn.steer(intent, laneCentre)) {
+                end();
+            }
             return;
         }
-        double blocked = parkedCarInTheWay();
+        double blocked = sightings.parkedCarInTheWay(lane);
         if (!Double.isNaN(blocked)) {
             intent.stopWithin(blocked - 0.7, "overtaking");
-            if (stage == OvertakingStage.PULLED_OUT && blocked < PULL_IN_EARLY && ownLaneFreeBeside(laneCentre)) {
+            if (stage == OvertakingStage.PULLED_OUT && blocked < PULL_IN_EARLY && sightings.ownLaneFreeBeside(laneCentre)) {
                 // something stands in the other lane ahead: back into its own lane now, while there is room
                 replace(PULL_IN_AHEAD, laneCentre, Waypoint.Kind.OVERTAKE_FINISH);
                 stage = OvertakingStage.FINISH;
@@ -183,8 +172,8 @@ final class Overtaker {
     private void advance(double laneCentre, Waypoint reached) {
         switch (stage) {
             case START -> {
-                Sighting s = look(laneCentre);
-                double farthest = Double.isNaN(s.farthest) ? PARKED_CAR_LENGTH : s.farthest;
+                ParkedCarSightings.Sighting s = sightings.look(lane, laneCentre);
+                double farthest = Double.isNaN(s.farthest()) ? PARKED_CAR_LENGTH : s.farthest();
                 if (faults.isActive(Fault.SECOND_PULL_OUT) && farthest > 6) {
                     faults.effective(Fault.SECOND_PULL_OUT);
                     replace(farthest - BUFFER, LaneFrame.v(lane, car.x(), car.y(), reached.x(), reached.y()) + PULL_OUT,
@@ -196,16 +185,16 @@ final class Overtaker {
                 stage = OvertakingStage.PULLED_OUT;
             }
             case PULLED_OUT -> {
-                if (sharp) {
+                if (squeezeIn.isOn()) {
                     stage = OvertakingStage.FINISH;
                     return;
                 }
-                Sighting s = look(laneCentre);
+                ParkedCarSightings.Sighting s = sightings.look(lane, laneCentre);
                 boolean rowBeforeTarget = !toTarget
-                        || !Double.isNaN(farthestParkedBefore(targetAheadInLane(laneCentre), laneCentre));
-                if (!Double.isNaN(s.farthest) && s.farthest > 0 && rowBeforeTarget) {
+                        || !Double.isNaN(sightings.farthestParkedBefore(targetAheadInLane(laneCentre), laneCentre));
+                if (!Double.isNaN(s.farthest()) && s.farthest() > 0 && rowBeforeTarget) {
                     // another parked car came into view beyond the one passed: keep passing
-                    replace(pulledOutUntil(s.farthest, laneCentre), laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
+                    replace(pulledOutUntil(s.farthest(), laneCentre), laneCentre + PULL_OUT, Waypoint.Kind.OVERTAKE_PULLED_OUT);
                     return;
                 }
                 double back = HEADWAY;
@@ -214,7 +203,7 @@ final class Overtaker {
                 }
                 double target = targetAheadInLane(laneCentre);
                 double in = laneCentre;
-                if ((toTarget || target < back + TargetSeeker.CAPTURE_DISTANCE) && ownLaneFreeBeside(laneCentre)) {
+                if ((toTarget || target < back + TargetSeeker.CAPTURE_DISTANCE) && sightings.ownLaneFreeBeside(laneCentre)) {
                     // the Target lies just past the parked cars: pull back in at it, as a driver would
                     back = Math.max(TIGHT_RETURN, Math.min(back, target));
                     toTarget = true;
@@ -240,9 +229,9 @@ final class Overtaker {
         double out = farthest + BUFFER + 1;
         double target = targetAheadInLane(laneCentre);
         // the Target may lie in a gap of the row: what matters is the row up to the Target
-        double before = farthestParkedBefore(target, laneCentre);
+        double before = sightings.farthestParkedBefore(target, laneCentre);
         double rowEnd = Double.isNaN(before) ? farthest : before;
-        if (!Double.isNaN(farthestParkedBefore(target + GAP_BEYOND_TARGET, laneCentre, target))) {
+        if (!Double.isNaN(sightings.farthestParkedBefore(target + GAP_BEYOND_TARGET, laneCentre, target))) {
             return out;
         }
         if (target > rowEnd + TIGHT_RETURN && target < rowEnd + BUFFER + 1 + HEADWAY + TargetSeeker.CAPTURE_DISTANCE) {
@@ -255,9 +244,8 @@ final class Overtaker {
             // too close past the row for a tight return: the car turns in sharply at it once its
             // tail is past the row, as a driver squeezes in ahead of a parked car
             toTarget = true;
-            sharp = true;
-            rowEndAlong = along() + rowEnd * Lanes.forwardSign(lane);
-            return rowEnd + SHARP_CLEARANCE;
+            squeezeIn.begin(lane, rowEnd);
+            return rowEnd + SqueezeIn.CLEARANCE;
         }
         return out;
     }
@@ -268,7 +256,7 @@ final class Overtaker {
     }
 
     private double along() {
-        return lane.isNorthSouth() ? car.y() : car.x();
+        return Lanes.along(lane, car.x(), car.y());
     }
 
     private void end() {
@@ -276,48 +264,7 @@ final class Overtaker {
         stage = OvertakingStage.NOT_OVERTAKING;
         oppositeStart = Double.NaN;
         toTarget = false;
-        sharp = false;
-        rowEndAlong = Double.NaN;
-    }
-
-    /** Heads straight for the Target, slowing to stop on it; a Target missed ends the manoeuvre. */
-    private void turnInAtTarget(Intent intent, double laneCentre) {
-        var target = car.scene().target().position();
-        double u = LaneFrame.u(lane, car.x(), car.y(), target.x(), target.y());
-        if (u < -TargetSeeker.CAPTURE_DISTANCE) {
-            end();
-            return;
-        }
-        intent.stopWithin(target.distanceTo(car.x(), car.y()), "overtaking");
-        double rowEnd = (rowEndAlong - along()) * Lanes.forwardSign(lane);
-        double face = laneCentre + ROW_FACE;
-        double heading = car.heading();
-        double toward = Bearing.turn(heading, Bearing.between(car.x(), car.y(), target.x(), target.y()));
-        double step = Math.max(-Dynamics.MAX_TURN, Math.min(Dynamics.MAX_TURN, toward));
-        double speed = Math.min(car.speed() + Dynamics.ACCELERATION, TIGHT_SPEED);
-        // the car turns about its rear axle, swinging its tail towards the row: it turns in only as
-        // far as keeps that tail clear of the row's end, straightening up while it is not
-        double bearing = heading + step;
-        if (!tailClear(bearing, speed, rowEnd, face)) {
-            bearing = tailClear(heading, speed, rowEnd, face) ? heading : lane.bearing();
-        }
-        intent.steer(bearing, "overtaking");
-    }
-
-    /**
-     * Whether the car's footprint after turning to {@code bearing} (about its rear axle) and moving
-     * {@code speed} keeps clear of the row: everything short of its end and beyond its side, with margins.
-     */
-    private boolean tailClear(double bearing, double speed, double rowEnd, double face) {
-        double pivot = AutonomousCar.REAR_AXLE;
-        double nx = car.x() - pivot * Bearing.dx(car.heading()) + (pivot + speed) * Bearing.dx(bearing);
-        double ny = car.y() - pivot * Bearing.dy(car.heading()) + (pivot + speed) * Bearing.dy(bearing);
-        Box next = Box.behind(nx, ny, bearing, Dimensions.AUTONOMOUS_CAR_LENGTH, Dimensions.AUTONOMOUS_CAR_WIDTH);
-        double u = rowEnd + TAIL_MARGIN;
-        double v = face - ROW_DEPTH / 2;
-        Box row = Box.behind(LaneFrame.x(lane, car.x(), u, v), LaneFrame.y(lane, car.y(), u, v), lane.bearing(),
-                PARKED_CAR_LENGTH, ROW_DEPTH);
-        return !next.overlaps(row);
+        squeezeIn.end();
     }
 
     /** Where the Target lies across the lane frame, from the car. */
@@ -378,100 +325,4 @@ final class Overtaker {
         return ticks;
     }
 
-    /** Whether no parked car stands in the car's own lane from just behind it to a few metres ahead. */
-    private boolean ownLaneFreeBeside(double laneCentre) {
-        Lidar lidar = car.lidar();
-        for (int h = 0; h < lidar.hits(); h++) {
-            if (lidar.isParkedCar(h) && lidar.u(h) > -AutonomousCar.REAR_AXLE - 1 && lidar.u(h) < PULL_IN_AHEAD + 1
-                    && Math.abs(lidar.v(h) - laneCentre) < 1.5) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /** The farthest LIDAR hit on a parked car in the car's lane between it and {@code before} metres ahead, or NaN. */
-    private double farthestParkedBefore(double before, double laneCentre) {
-        return farthestParkedBefore(before, laneCentre, 0);
-    }
-
-    private double farthestParkedBefore(double before, double laneCentre, double from) {
-        Lidar lidar = car.lidar();
-        double farthest = Double.NaN;
-        for (int h = 0; h < lidar.hits(); h++) {
-            double u = lidar.u(h);
-            if (lidar.isParkedCar(h) && u > from && u < before && Math.abs(lidar.v(h) - laneCentre) < 1.4) {
-                farthest = Double.isNaN(farthest) ? u : Math.max(farthest, u);
-            }
-        }
-        return farthest;
-    }
-
-    /** Distance to the nearest parked car inside the width the car sweeps ahead of it, or NaN. */
-    private double parkedCarInTheWay() {
-        Lidar lidar = car.lidar();
-        int hits = lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.scene(), car);
-        // the width the car sweeps lies along its heading, which pulling out turns away from the lane
-        double phi = Math.toRadians(Bearing.turn(lane.bearing(), car.heading()));
-        double cos = Math.cos(phi);
-        double sin = Math.sin(phi);
-        double nearest = Double.NaN;
-        for (int h = 0; h < hits; h++) {
-            double along = lidar.u(h) * cos - lidar.v(h) * sin;
-            double across = lidar.u(h) * sin + lidar.v(h) * cos;
-            if (lidar.isParkedCar(h) && along > 0 && Math.abs(across) < CORRIDOR) {
-                nearest = Double.isNaN(nearest) ? along : Math.min(nearest, along);
-            }
-        }
-        return nearest;
-    }
-
-    /** What the LIDAR shows of parked cars, in the lane frame. */
-    private record Sighting(double nearest, double farthest, double opposite, boolean oppositeBeside) {
-    }
-
-    private Sighting look(double laneCentre) {
-        Lidar lidar = car.lidar();
-        if (!faults.isActive(Fault.OBSTACLE_SEARCH_ALONG_HEADING)) {
-            lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.scene(), car);
-            return sighting(lidar, laneCentre, 0);
-        }
-        // the faulty car takes the road to run along its heading: hits are read in the heading's frame
-        int hits = lidar.sweep(car.x(), car.y(), car.heading(), lane, car.scene(), car);
-        Sighting faulty = sighting(lidar, laneCentre, Math.toRadians(Bearing.turn(lane.bearing(), car.heading())));
-        if (hits > 0 && !faulty.equals(sighting(lidar, laneCentre, 0))) {
-            faults.effective(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
-        } else {
-            faults.reached(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
-        }
-        return faulty;
-    }
-
-    /** Parked cars in the lane ahead and on the other side, with the hits turned by {@code phi} first. */
-    private static Sighting sighting(Lidar lidar, double laneCentre, double phi) {
-        double cos = Math.cos(phi);
-        double sin = Math.sin(phi);
-        double nearest = Double.NaN;
-        double farthest = Double.NaN;
-        double opposite = Double.NaN;
-        boolean beside = false;
-        for (int h = 0; h < lidar.hits(); h++) {
-            if (!lidar.isParkedCar(h)) {
-                continue;
-            }
-            double u = lidar.u(h) * cos - lidar.v(h) * sin;
-            double v = lidar.u(h) * sin + lidar.v(h) * cos;
-            if (u > 0 && v > laneCentre - 1.4 && v < laneCentre + 1.4) {
-                nearest = Double.isNaN(nearest) ? u : Math.min(nearest, u);
-                farthest = Double.isNaN(farthest) ? u : Math.max(farthest, u);
-            } else if (u > -BESIDE && v > laneCentre + 1.6 && v < laneCentre + 4.4) {
-                if (u > 1) {
-                    opposite = Double.isNaN(opposite) ? u : Math.min(opposite, u);
-                } else {
-                    beside = true;
-                }
-            }
-        }
-        return new Sighting(nearest, farthest, opposite, beside);
-    }
 }

@@ -11,7 +11,7 @@ import sitcov.world.MapGenerator;
 
 /**
  * Every fault of a set on maps {@code first .. first+maps-1} (internal seed = external seed): one
- * fault-free run per map and one run per fault, judged by the {@link MapRunner}. Maps run
+ * fault-free run per map and one run per fault (stopped at its verdict), judged by the {@link MapRunner}. Maps run
  * in parallel, results come back in map order, so the outcome does not depend on the thread count.
  */
 public final class FaultCalibration {
@@ -24,7 +24,8 @@ public final class FaultCalibration {
         List<Callable<JudgedMap>> tasks = new ArrayList<>(maps);
         for (int i = 0; i < maps; i++) {
             long seed = first + i;
-            tasks.add(() -> MapRunner.judge(MapGenerator.generate(seed), seed, ordered));
+            // every column of calibration is a verdict, which a faulty run has settled when it stops
+            tasks.add(() -> MapRunner.judge(MapGenerator.generate(seed), seed, ordered, FaultyRuns.UNTIL_VERDICT));
         }
         return InOrder.run(tasks, threads, progress, "fault calibration");
     }

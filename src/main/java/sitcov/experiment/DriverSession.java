@@ -2,6 +2,7 @@ package sitcov.experiment;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.function.Supplier;
 import java.util.random.RandomGenerator;
@@ -28,7 +29,7 @@ public final class DriverSession {
     private final List<Journal.Entry> replay;
     private final Optional<Journal.Finished> finishedBefore;
     private final Driver self;
-    private final java.util.Map<MapId, SharedMap> shared;
+    private final Map<MapId, SharedMap> shared;
     /** Wall time charged for maps another driver of the replication judged: as if this driver had run them. */
     private long creditedNanos;
     private int drawn;
@@ -41,7 +42,7 @@ public final class DriverSession {
     private int liveMaps;
 
     DriverSession(ExperimentRunner host, PlannedReplication replication, String driver, int driverIndex, Budget budget,
-                  Journal journal, Driver self, java.util.Map<MapId, SharedMap> shared) {
+                  Journal journal, Driver self, Map<MapId, SharedMap> shared) {
         this.shared = shared;
         this.host = host;
         this.replication = replication.index();

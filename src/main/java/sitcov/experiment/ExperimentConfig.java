@@ -3,6 +3,7 @@ package sitcov.experiment;
 import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
+import java.util.Objects;
 import java.util.Set;
 import sitcov.coverage.GridDefinition;
 import sitcov.faults.Fault;
@@ -33,7 +34,7 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
             throw new IllegalArgumentException("candidate_limit " + candidateLimit + " is below the first driver's "
                     + largest + " candidates");
         }
-        java.util.Objects.requireNonNull(faultyRuns, "faultyRuns");
+        Objects.requireNonNull(faultyRuns, "faultyRuns");
         faults = Set.copyOf(faults);
         drivers = List.copyOf(drivers);
         sweep = List.copyOf(sweep);

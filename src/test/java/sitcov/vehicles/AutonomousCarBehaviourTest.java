@@ -135,33 +135,21 @@ class AutonomousCarBehaviourTest {
     @Test
     void itPullsOutFromCloseBehindAParkedCarWithoutItsCornersLeavingTheRoad() {
         // maps where the car crept up behind a parked car and a steep pull-out took it off the far side
-        for (long seed : new long[] {630, 824, 866}) {
-            RunResult result = Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
-            assertEquals(List.of(), result.accidents(), "seed " + seed);
-            assertEquals(Outcome.TARGET_REACHED, result.outcome(), "seed " + seed);
-        }
+        assertReachedWithoutAccident(630, 824, 866);
     }
 
     @Test
     void itPullsInTowardsATargetOffItsLaneCentreJustPastAParkedCar() {
         // maps whose Target lies past a parked car, over a metre off the lane centre: back on its lane
         // centre the car passed it more than 1.5 m away and circled until TIMEOUT
-        for (long seed : new long[] {137, 208}) {
-            RunResult result = Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
-            assertEquals(Outcome.TARGET_REACHED, result.outcome(), "seed " + seed + ": " + result);
-            assertEquals(List.of(), result.accidents(), "seed " + seed);
-        }
+        assertReachedWithoutAccident(137, 208);
     }
 
     @Test
     void itSteersGentlyOntoATargetJustAheadWithoutItsBodyCrossingTheCentreLine() {
         // map 579: the Target lies 2 m past a junction's exit, by the centre line; aiming at it from 2 m
         // swung the car's body over the line; maps 86 and 143 left their lane the same way near the Target
-        for (long seed : new long[] {579, 86, 143}) {
-            RunResult result = Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
-            assertEquals(Outcome.TARGET_REACHED, result.outcome(), "seed " + seed + ": " + result);
-            assertEquals(List.of(), result.accidents(), "seed " + seed);
-        }
+        assertReachedWithoutAccident(579, 86, 143);
     }
 
     @Test
@@ -169,10 +157,15 @@ class AutonomousCarBehaviourTest {
         // map 174: the Target lies 1.8 m past a lone parked car's front; map 10894: 2 m past the last
         // car of a row, seen only once pulled out. Both timed out: the car passed the Target in the
         // other lane and circled. It now turns in once its tail is clear of the row, and stops on it.
-        for (long seed : new long[] {174, 10894}) {
+        assertReachedWithoutAccident(174, 10894);
+    }
+
+    /** Each map, run fault-free with internal seed = external seed, reaches its Target with no accident. */
+    private static void assertReachedWithoutAccident(long... seeds) {
+        for (long seed : seeds) {
             RunResult result = Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
+            assertEquals(List.of(), result.accidents(), "seed " + seed + ": " + result);
             assertEquals(Outcome.TARGET_REACHED, result.outcome(), "seed " + seed + ": " + result);
-            assertEquals(List.of(), result.accidents(), "seed " + seed);
         }
     }
 }

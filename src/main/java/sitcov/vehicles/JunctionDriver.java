@@ -58,6 +58,8 @@ final class JunctionDriver {
     private double finishBeyond;
     private boolean crossing;
     private boolean waiting;
+    /** The junction the car last waited short of: it creeps up to that square's edge (faults 5 and 6 act there). */
+    private int waitedFor = -1;
 
     JunctionDriver(AutonomousCar car, FaultSwitchboard faults, RandomGenerator decisions, Route route, int junctions) {
         this.car = car;
@@ -147,16 +149,14 @@ final class JunctionDriver {
             Compass leaving = next.id() == held ? exit : reservedExit;
             if (d > 0 && !exitIsClear(next, leaving)) {
                 // do not enter a junction without room to leave it: wait short of the square
-                waiting = true;
-                intent.stopWithin(d - WAIT_SHORT_OF_SQUARE, "junction");
+                waitShortOf(intent, next, d);
                 return;
             }
             if (d <= 0 && !crossing) {
                 startCrossing(next, lane);
                 cross(intent);
             } else {
-                intent.limit(Dynamics.speedToSlowTo(entrySpeed(lane, next.id() == held ? exit : reservedExit), d),
-                        "junction");
+                pullUp(intent, next, entrySpeed(lane, next.id() == held ? exit : reservedExit), d);
             }
             return;
         }
@@ -179,14 +179,14 @@ final class JunctionDriver {
             }
             if (!exitIsClear(next, chosen)) {
                 // granted the junction so close to it that it would be in before looking at the exit
-                waiting = true;
-                intent.stopWithin(d - WAIT_SHORT_OF_SQUARE, "junction");
+                waitShortOf(intent, next, d);
                 return;
             }
-            intent.limit(Dynamics.speedToSlowTo(entrySpeed(lane, chosen), d), "junction");
+            pullUp(intent, next, entrySpeed(lane, chosen), d);
             return;
         }
         waiting = true;
+        waitedFor = next.id();
         if (faults.isActive(Fault.CREEPS_WHILE_WAITING)) {
             intent.crawl();
             if (car.speed() > 0 || d > WAIT_SHORT_OF_SQUARE) {
@@ -197,6 +197,22 @@ final class JunctionDriver {
         } else {
             intent.stopWithin(d - WAIT_SHORT_OF_SQUARE, "junction");
         }
+    }
+
+    /** Slows to the entry speed at the square's edge; crawls there after waiting for the junction. */
+    private void pullUp(Intent intent, Junction junction, double entrySpeed, double d) {
+        intent.limit(Dynamics.speedToSlowTo(entrySpeed, d), "junction");
+        if (junction.id() == waitedFor) {
+            // a careful driver who had to wait pulls up to the edge slowly: the view into the
+            // junction opens only there
+            intent.crawl();
+        }
+    }
+
+    private void waitShortOf(Intent intent, Junction junction, double d) {
+        waiting = true;
+        waitedFor = junction.id();
+        intent.stopWithin(d - WAIT_SHORT_OF_SQUARE, "junction");
     }
 
     /** Whether the exit lane just beyond the square is free of other vehicles (the radar sees it). */
@@ -237,6 +253,7 @@ final class JunctionDriver {
 
     private void startCrossing(Junction junction, Compass lane) {
         arrival = lane;
+        waitedFor = -1;
         var point = junction.exitPoint(exit, EXIT_BEYOND_SQUARE);
         waypoint = car.waypoints().create(point.x(), point.y(), Waypoint.Kind.JUNCTION_EXIT);
         Waypoint wp = car.waypoints().lookup(waypoint);

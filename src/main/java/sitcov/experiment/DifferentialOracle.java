@@ -36,6 +36,6 @@ public final class DifferentialOracle {
             detection = Detection.NOT_REACHED;
         }
         return new FaultVerdict(fault, run.externalSeed(), run.internalSeed(), detection,
-                fresh.stream().findFirst(), run.hasAccident(), activation, run);
+                fresh.stream().findFirst(), activation.reached() && run.hasAccident(), activation, run);
     }
 }

@@ -16,8 +16,12 @@ public record FaultOutcome(Fault fault, RunSummary run, boolean reached, boolean
                 v.newAccident().map(a -> a.type()), v.foundByPaperNotion());
     }
 
-    /** Found under the differential oracle, or under the paper's notion. */
+    /**
+     * Found under the differential oracle, or under the paper's notion: the fault was triggered
+     * (reached) and the run had an accident (§5.2). Folders written before the notion required
+     * {@code reached} hold any accident in {@code paperFound}; requiring it here reads them alike.
+     */
     public boolean found(boolean paperNotion) {
-        return paperNotion ? paperFound : detection.found();
+        return paperNotion ? reached && paperFound : detection.found();
     }
 }

@@ -9,7 +9,8 @@ import sitcov.oracle.RunResult;
 /**
  * The verdict on one fault for one map and internal seed: the differential oracle's
  * {@link Detection} (with the first accident the fault-free run lacks, when FOUND) and, beside it,
- * the paper's weaker notion: the faulty run had any accident at all; and the faulty run itself.
+ * the paper's weaker notion: the fault was triggered (reached) and the faulty run had any accident
+ * at all (§5.2); and the faulty run itself.
  */
 public record FaultVerdict(Fault fault, long externalSeed, long internalSeed, Detection detection,
                            Optional<Accident> newAccident, boolean foundByPaperNotion, Activation activation,

@@ -38,6 +38,12 @@ record Preset(Path file, ExperimentConfig config) {
     }
 
     static Preset read(Path file, Long masterSeedOverride, Drivers drivers) throws UsageException {
+        return read(file, masterSeedOverride, null, drivers);
+    }
+
+    /** The preset, with its master seed and number of replications replaced where an override is given. */
+    static Preset read(Path file, Long masterSeedOverride, Integer replicationsOverride, Drivers drivers)
+            throws UsageException {
         Properties p = new Properties();
         String text;
         try {
@@ -50,6 +56,9 @@ record Preset(Path file, ExperimentConfig config) {
             throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage());
         }
         duplicateKeys(text, file);
+        if (replicationsOverride != null) {
+            p.setProperty("replications", replicationsOverride.toString());
+        }
         return new Preset(file, config(p, file, masterSeedOverride, drivers));
     }
 

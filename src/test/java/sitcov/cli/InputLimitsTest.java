@@ -76,7 +76,7 @@ class InputLimitsTest {
     @Test
     void theOptionsOfAnUnknownOptionsMessageComeInAFixedOrder() {
         CliRunner r = CliRunner.run("run", "smoke", "--sed", "1");
-        assertTrue(r.err().contains("the options are --out, --resume, --seed, --shard, --threads."), r.err());
+        assertTrue(r.err().contains("the options are --out, --replications, --resume, --seed, --shard, --threads."), r.err());
     }
 
     @Test

@@ -1,0 +1,73 @@
+package sitcov.stats;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+
+class WilcoxonSignedRankTest {
+    @Test
+    void signedRankMatchesTheDepressionScaleExampleOfRsDocumentation() {
+        // Hollander & Wolfe (1973), p. 29f, as in R's ?wilcox.test: wilcox.test(x, y, paired = TRUE)
+        // gives V = 40, p-value = 0.03906 (exact: 2 * 10 / 2^9 = 0.0390625).
+        double[] x = {1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30};
+        double[] y = {0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29};
+        WilcoxonSignedRank.Result r = WilcoxonSignedRank.test(x, y);
+        assertEquals(40, r.wPlus(), 0);
+        assertEquals(9, r.n());
+        assertTrue(r.exact());
+        assertEquals(0.0390625, r.p(), 1e-15);
+        assertEquals(r.p(), WilcoxonSignedRank.test(y, x).p(), 1e-15); // two-sided: symmetric
+    }
+
+    @Test
+    void signedRankDropsTheZeroAndAveragesTiesInWikipediasExample() {
+        // Wikipedia, "Wilcoxon signed-rank test", Example: 10 pairs, one zero difference dropped, so
+        // N_r = 9 and the signed-rank sum W = 9, i.e. W+ = (W + 45) / 2 = 27. The two tied |differences|
+        // force the normal approximation: z = 0.4743, p = 0.6353 (cross-checked with scipy.stats.wilcoxon
+        // (zero_method="wilcox", correction=True, method="approx")).
+        double[] after = {125, 115, 130, 140, 140, 115, 140, 125, 140, 135};
+        double[] before = {110, 122, 125, 120, 140, 124, 123, 137, 135, 145};
+        WilcoxonSignedRank.Result r = WilcoxonSignedRank.test(after, before);
+        assertEquals(27, r.wPlus(), 0);
+        assertEquals(9, r.n());
+        assertEquals(9, 2 * r.wPlus() - r.n() * (r.n() + 1) / 2.0, 0);
+        assertFalse(r.exact());
+        assertEquals(0.4742953333830018, r.z(), 1e-12);
+        assertEquals(0.6352893188352069, r.p(), 1e-12);
+    }
+
+    @Test
+    void allZeroDifferencesLeaveNothingToRankAndPOne() {
+        // Wilcoxon's convention: zero differences are dropped, so here n = 0 and nothing is evidence.
+        WilcoxonSignedRank.Result r = WilcoxonSignedRank.test(new double[] {1, 2, 3}, new double[] {1, 2, 3});
+        assertEquals(0, r.n());
+        assertEquals(0, r.wPlus(), 0);
+        assertEquals(1, r.p(), 0);
+    }
+
+    @Test
+    void moreThanTwentyfiveDifferencesUseTheNormalApproximation() {
+        // 26 untied positive differences 1..26: W+ = 351 = n(n+1)/2; by hand
+        // z = (351 - 175.5 - 0.5) / sqrt(26 * 27 * 53 / 24) = 4.4446, p = 2 * Phi(-4.4446) = 8.8037e-6
+        // (cross-checked with scipy.stats.wilcoxon(method="approx", correction=True)).
+        double[] d = new double[26];
+        for (int i = 0; i < d.length; i++) {
+            d[i] = i + 1;
+        }
+        WilcoxonSignedRank.Result r = WilcoxonSignedRank.test(d);
+        assertFalse(r.exact());
+        assertEquals(351, r.wPlus(), 0);
+        assertEquals(175 / Math.sqrt(26 * 27 * 53 / 24.0), r.z(), 1e-12);
+        assertEquals(8.803669768907956e-06, r.p(), 1e-15);
+    }
+
+    @Test
+    void theExactDistributionForThreeDifferencesIsTheOneOfTheTextbooks() {
+        // n = 3: W+ takes 0, 1, 2, 3, 3, 4, 5, 6 over the 8 sign patterns (by hand), so W+ = 6 has
+        // two-sided p = 2/8 and W+ = 3 has p = min(1, 2 * 5/8) = 1.
+        assertEquals(0.25, WilcoxonSignedRank.exactP(6, 3), 1e-15);
+        assertEquals(1, WilcoxonSignedRank.exactP(3, 3), 1e-15);
+    }
+}

@@ -47,6 +47,7 @@ final class MergeCommand implements Command {
         try {
             Summary summary = ShardMerger.merge(shards, target, RunCommand.execution(1));
             SummaryTable.print(out, Manifest.read(target).config(), summary);
+            VerdictPrinter.print(out, target);
         } catch (IllegalArgumentException e) {
             throw new UsageException("merge: " + e.getMessage() + ".");
         } catch (IOException e) {

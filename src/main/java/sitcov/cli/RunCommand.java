@@ -136,6 +136,7 @@ final class RunCommand implements Command {
             }
         }
         SummaryTable.print(out, config, recorder.summary());
+        VerdictPrinter.print(out, folder);
         out.println("Results in " + folder + " (" + progress.elapsed() + " on " + threads + " threads)");
         return ExitCode.OK;
     }

@@ -19,6 +19,15 @@ public record Metrics(int maps, int cells, double methodPropFault, double propMa
         return perFault.clone();
     }
 
+    /** Distinct faults found on at least one map. */
+    public int faultsFound() {
+        int n = 0;
+        for (double p : perFault) {
+            n += p > 0 ? 1 : 0;
+        }
+        return n;
+    }
+
     public static Metrics of(List<MapRun> runs, List<Fault> faults, boolean paperNotion) {
         int n = runs.size();
         int k = faults.size();

@@ -15,7 +15,10 @@ import sitcov.engine.RandomStreams;
  *   every driver runs a shared map identically; a built situation's is
  *   {@code mix(M, "internal-seed:situation:" + name)};</li>
  * <li>the map itself, and everything random in a run, come from the external and internal seeds'
- *   own named streams ({@link sitcov.world.MapGenerator}, {@link sitcov.engine.SimState}).</li>
+ *   own named streams ({@link sitcov.world.MapGenerator}, {@link sitcov.engine.SimState});</li>
+ * <li>the analysis of the results (bootstrap resamples, permutations) draws from stream
+ *   {@code purpose} of {@code M} derived by {@code analysis}, so its intervals and p-values
+ *   are reproduced with the results.</li>
  * </ul>
  */
 public final class SeedPlan {
@@ -38,6 +41,11 @@ public final class SeedPlan {
     /** The candidate stream of replication {@code replication} of a comparison. */
     public static RandomGenerator candidates(long masterSeed, int replication) {
         return candidates(masterSeed, replicationLabel(replication));
+    }
+
+    /** The randomness of one analysis of the results, e.g. {@code "bootstrap"} or {@code "cell-permutations"}. */
+    public static RandomGenerator analysis(long masterSeed, String purpose) {
+        return new RandomStreams(masterSeed).derive("analysis").stream(purpose);
     }
 
     /** The internal seed a map runs with: fixed by the master seed and the map, whichever driver runs it. */

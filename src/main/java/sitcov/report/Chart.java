@@ -29,7 +29,7 @@ final class Chart {
         this(g, left, top, width, height, nice(xMax), nice(yMax), 5);
     }
 
-    /** A panel whose x axis runs to exactly {@code xMax} with {@code xTicks} divisions (for counts). */
+    /** A panel whose x axis runs to exactly {@code xMax} with {@code xTicks} divisions (for counts; 0: no x labels). */
     Chart(Graphics2D g, int left, int top, int width, int height, double xMax, double yMax, int xTicks) {
         this.g = g;
         this.left = left;
@@ -69,7 +69,7 @@ final class Chart {
         g.drawString(title, left, top - 12);
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
         g.setStroke(new BasicStroke(1f));
-        for (int i = 0; i <= xTicks; i++) {
+        for (int i = 0; xTicks > 0 && i <= xTicks; i++) {
             double x = xMax * i / xTicks;
             g.setColor(Color.DARK_GRAY);
             String xs = number(x);

@@ -144,13 +144,13 @@ final class ExperimentFigures {
         return image;
     }
 
-    private static void note(Graphics2D g, String text) {
+    static void note(Graphics2D g, String text) {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
         g.setColor(Color.BLACK);
         g.drawString(text, 80, 425);
     }
 
-    private static BufferedImage canvas(int w, int h) {
+    static BufferedImage canvas(int w, int h) {
         BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         g.setColor(Color.WHITE);
@@ -159,14 +159,14 @@ final class ExperimentFigures {
         return image;
     }
 
-    private static Graphics2D graphics(BufferedImage image) {
+    static Graphics2D graphics(BufferedImage image) {
         Graphics2D g = image.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         return g;
     }
 
-    private static void title(Graphics2D g, String text) {
+    static void title(Graphics2D g, String text) {
         g.setColor(Color.BLACK);
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 15));
         g.drawString(text, 20, 30);

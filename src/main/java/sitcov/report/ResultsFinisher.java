@@ -62,6 +62,7 @@ public final class ResultsFinisher {
             OutputFile.writeLines(folder.resolve(ResultsFolder.TABLE2), tables.table2());
             OutputFile.writeLines(folder.resolve(ResultsFolder.COVERAGE_CURVE), tables.curve());
             ExperimentFigures.writeAll(config, summary, journal, folder);
+            AnalysisFiles.write(config, summary, folder);
         }
         writeExecution(folder, execution);
         manifest.complete(true).write(folder);

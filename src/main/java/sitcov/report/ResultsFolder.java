@@ -30,6 +30,19 @@ public final class ResultsFolder {
     public static final String FIG2 = "fig2-faults-per-map.png";
     public static final String FIG3 = "fig3-coverage.png";
     public static final String FIG3_TIME = "fig3-coverage-time.png";
+    /** Every pair of drivers: per measure and per fault, the difference with its uncertainty. */
+    public static final String STATS = "stats.csv";
+    /** The comparison in a few plain sentences, as {@code run} prints it at the end. */
+    public static final String VERDICT = "verdict.txt";
+    /** Per replication, driver and fault: the ticks and candidates spent when the fault was first found. */
+    public static final String DISCOVERY = "discovery.csv";
+    /** Per coverage cell: distinct maps, and how many found each fault. */
+    public static final String CELL_FAULTS = "cell-faults.csv";
+    /** Per fault: how much of the variation in detection the cell explains, against chance. */
+    public static final String UNIFORMITY = "uniformity.csv";
+    public static final String FIG_FORESTPLOT = "fig-faults-odds-ratios.png";
+    public static final String FIG_MEASURES = "fig-measures-by-driver.png";
+    public static final String FIG_DISCOVERY = "fig-faults-found-vs-ticks.png";
     public static final String SWEEP = "sweep.csv";
     public static final String FIG4 = "fig4-faults-vs-coverage.png";
 

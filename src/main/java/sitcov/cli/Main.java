@@ -29,6 +29,7 @@ public final class Main {
         return new Main(List.of(
                 new RunCommand(Drivers.standard()),
                 new MergeCommand(),
+                new ReportCommand(),
                 new SimulateCommand(),
                 new MapCommand(),
                 new CoverageCommand(),

@@ -50,6 +50,25 @@ public final class ResultsFinisher {
     /** Writes everything a complete folder holds; returns the summary the tables were made from. */
     public static Summary finish(Path folder, Manifest manifest, Journal journal, Map<String, String> execution)
             throws IOException {
+        Summary summary = writeResults(folder, manifest, journal);
+        writeExecution(folder, execution);
+        manifest.complete(true).write(folder);
+        return summary;
+    }
+
+    /**
+     * Writes a complete folder's tables, statistics and figures again from its journal, as this
+     * version of sitcov makes them; the journal, manifest and record of execution stay as they are.
+     */
+    public static Summary report(Path folder) throws IOException {
+        Manifest manifest = Manifest.read(folder);
+        if (!manifest.complete()) {
+            throw new IllegalArgumentException(folder + " is not complete; finish it with 'run --resume " + folder + "'");
+        }
+        return writeResults(folder, manifest, JournalFiles.read(folder, manifest.config()));
+    }
+
+    private static Summary writeResults(Path folder, Manifest manifest, Journal journal) throws IOException {
         ExperimentConfig config = manifest.config();
         List<ReplicationResult> results = results(manifest, journal);
         JournalFiles.write(folder, config, journal);
@@ -64,8 +83,6 @@ public final class ResultsFinisher {
             ExperimentFigures.writeAll(config, summary, journal, folder);
             AnalysisFiles.write(config, summary, folder);
         }
-        writeExecution(folder, execution);
-        manifest.complete(true).write(folder);
         return summary;
     }
 

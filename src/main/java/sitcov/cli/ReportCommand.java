@@ -1,0 +1,57 @@
+package sitcov.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Set;
+import sitcov.experiment.Summary;
+import sitcov.report.Manifest;
+import sitcov.report.ResultsFinisher;
+
+/**
+ * {@code report DIR}: a complete results folder's tables, statistics, verdict and figures written
+ * again from its journal, e.g. after an upgrade of sitcov brought new ones; nothing is simulated.
+ */
+final class ReportCommand implements Command {
+    @Override
+    public String name() {
+        return "report";
+    }
+
+    @Override
+    public String synopsis() {
+        return "DIR";
+    }
+
+    @Override
+    public String summary() {
+        return "write a complete results folder's tables, statistics, verdict and figures again from its journal";
+    }
+
+    @Override
+    public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
+        Options options = Options.parse(name(), args, Set.of(), Set.of());
+        if (options.positional().size() != 1) {
+            throw new UsageException("report: name one results folder, e.g. 'report target/results/smoke-seed1'.");
+        }
+        Path folder = Path.of(options.positional().get(0));
+        if (!Files.isRegularFile(folder.resolve(sitcov.report.ResultsFolder.MANIFEST))) {
+            throw new UsageException("report: " + Options.shown(folder) + " is not a results folder (it has no "
+                    + sitcov.report.ResultsFolder.MANIFEST + "); name the folder 'run' wrote.");
+        }
+        try {
+            Summary summary = ResultsFinisher.report(folder);
+            SummaryTable.print(out, Manifest.read(folder).config(), summary);
+            VerdictPrinter.print(out, folder);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("report: " + e.getMessage() + ".");
+        } catch (IOException e) {
+            err.println("sitcov: report: could not write into " + folder + ": " + e.getMessage());
+            return ExitCode.FAILURE;
+        }
+        out.println("Results written again in " + folder);
+        return ExitCode.OK;
+    }
+}

@@ -34,5 +34,9 @@ final class SummaryTable {
                         m.avgMapFault());
             }
         }
+        int seen = summary.cellsSeen();
+        out.printf(Locale.ROOT, "  cells: of the grid's %d, %d were seen by some driver in some replication (coverage of those:"
+                + " %s)%n", config.grid().cells(), seen, String.join(", ", config.drivers().stream().map(d -> String.format(
+                        Locale.ROOT, "%s %.1f %%", d, seen == 0 ? 0 : 100 * summary.mean(d, false).cells() / seen)).toList()));
     }
 }

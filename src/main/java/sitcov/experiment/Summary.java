@@ -67,6 +67,22 @@ public final class Summary {
         return m;
     }
 
+    /**
+     * The cells ever seen: those any driver covered in any replication. With a coverage-filter
+     * driver, which runs the first candidate of every cell it meets, that is every cell its
+     * replications' random candidates reached (600 000 candidates in {@code mature-rq1}): coverage
+     * is reported of these reachable cells beside the grid's total.
+     */
+    public int cellsSeen() {
+        java.util.Set<Integer> seen = new java.util.HashSet<>();
+        for (ReplicationResult r : results) {
+            for (DriverRun d : r.drivers()) {
+                d.maps().stream().mapToInt(MapRun::cell).filter(c -> c >= 0).forEach(seen::add);
+            }
+        }
+        return seen.size();
+    }
+
     /** The means over every replication of one driver under one notion. */
     public Mean mean(String driver, boolean paperNotion) {
         List<Metrics> all = new ArrayList<>();

@@ -29,18 +29,19 @@ final class ResultsTables {
 
     List<String> summary() {
         List<String> rows = new ArrayList<>();
-        StringBuilder header = new StringBuilder("driver,replication,notion,maps_run,cells_covered,cells_total,"
+        StringBuilder header = new StringBuilder("driver,replication,notion,maps_run,cells_covered,cells_total,cells_seen,"
                 + "method_prop_fault,prop_map_all_fault,avg_map_fault");
         for (Fault f : summary.faults()) {
             header.append(",fault_").append(f.id());
         }
         rows.add(header.toString());
+        int seen = summary.cellsSeen();
         for (ReplicationResult r : summary.results()) {
             for (DriverRun d : r.drivers()) {
                 for (String notion : NOTIONS) {
                     Metrics x = summary.metrics(r.replication(), d.driver(), notion.equals("paper"));
-                    StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%s,%d,%s,%d,%d,%d,%.4f,%.4f,%.4f",
-                            d.driver(), r.replication(), notion, x.maps(), x.cells(), config.grid().cells(),
+                    StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%s,%d,%s,%d,%d,%d,%d,%.4f,%.4f,%.4f",
+                            d.driver(), r.replication(), notion, x.maps(), x.cells(), config.grid().cells(), seen,
                             x.methodPropFault(), x.propMapAllFault(), x.avgMapFault()));
                     for (double p : x.perFault()) {
                         s.append(String.format(Locale.ROOT, ",%.4f", p));

@@ -61,14 +61,15 @@ class ResultsTablesTest {
     @Test
     void summaryCsvHasTheMeasuresPerDriverReplicationAndNotionWorkedOutByHand() {
         List<String> rows = new ResultsTables(CONFIG, SUMMARY).summary();
-        assertEquals("driver,replication,notion,maps_run,cells_covered,cells_total,method_prop_fault,prop_map_all_fault,"
+        assertEquals("driver,replication,notion,maps_run,cells_covered,cells_total,cells_seen,method_prop_fault,prop_map_all_fault,"
                 + "avg_map_fault,fault_14,fault_19", rows.get(0));
+        // cells seen by any driver in any replication: 5, 6 (filter), 7 (random), 9 (both): 4
         // filter, replication 0: 2 maps, 2 cells, both faults found somewhere, 1 of 2 maps finds both, 3 finds / 2 maps
-        assertEquals("coverage-filter,0,differential,2,2,216,1.0000,0.5000,1.5000,1.0000,0.5000", rows.get(1));
+        assertEquals("coverage-filter,0,differential,2,2,216,4,1.0000,0.5000,1.5000,1.0000,0.5000", rows.get(1));
         // random, replication 0: 3 maps in 2 cells, only 14 found (once): 1/2, 0, 1/3
-        assertEquals("random,0,differential,3,2,216,0.5000,0.0000,0.3333,0.3333,0.0000", rows.get(3));
+        assertEquals("random,0,differential,3,2,216,4,0.5000,0.0000,0.3333,0.3333,0.0000", rows.get(3));
         // random, replication 1, paper's notion: fault 19 on one map of two
-        assertEquals("random,1,paper,2,1,216,0.5000,0.0000,0.5000,0.0000,0.5000", rows.get(8));
+        assertEquals("random,1,paper,2,1,216,4,0.5000,0.0000,0.5000,0.0000,0.5000", rows.get(8));
         assertEquals(1 + 2 * 2 * 2, rows.size());
     }
 

@@ -30,6 +30,7 @@ public final class Main {
                 new RunCommand(Drivers.standard()),
                 new MergeCommand(),
                 new ReportCommand(),
+                new ReplayCommand(),
                 new SimulateCommand(),
                 new MapCommand(),
                 new CoverageCommand(),

@@ -55,13 +55,17 @@ public final class JournalFiles {
         }
     }
 
+    /** The journal's maps in runs.csv's order: by replication, then the preset's driver order, then map index. */
+    static List<Journal.Entry> inOrder(ExperimentConfig config, Journal journal) {
+        Comparator<MapRun> mapOrder = Comparator.comparingInt(MapRun::replication)
+                .thenComparingInt(r -> config.driverIndex(r.driver())).thenComparingInt(MapRun::mapIndex);
+        return journal.entries().stream().sorted(Comparator.comparing(Journal.Entry::run, mapOrder)).toList();
+    }
+
     /** Writes the journal whole, in canonical order, replacing the folder's journal files. */
     public static void write(Path folder, ExperimentConfig config, Journal journal) throws IOException {
         RunsCsv runsCsv = new RunsCsv(config);
-        Comparator<MapRun> mapOrder = Comparator.comparingInt(MapRun::replication)
-                .thenComparingInt(r -> config.driverIndex(r.driver())).thenComparingInt(MapRun::mapIndex);
-        List<Journal.Entry> entries = journal.entries().stream()
-                .sorted(Comparator.comparing(Journal.Entry::run, mapOrder)).toList();
+        List<Journal.Entry> entries = inOrder(config, journal);
         List<Journal.Finished> finished = journal.finished().stream()
                 .sorted(Comparator.comparingInt((Journal.Finished f) -> f.spend().replication())
                         .thenComparingInt(f -> config.driverIndex(f.spend().driver()))).toList();

@@ -1,0 +1,174 @@
+package sitcov.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import sitcov.experiment.FaultOutcome;
+import sitcov.experiment.FaultVerdict;
+import sitcov.experiment.FaultyRuns;
+import sitcov.experiment.JudgedMap;
+import sitcov.experiment.MapRunner;
+import sitcov.experiment.RunSummary;
+import sitcov.experiment.Simulator;
+import sitcov.faults.Fault;
+import sitcov.report.ReplayPicture;
+import sitcov.report.ResultsRows;
+import sitcov.report.RunRenderer;
+import sitcov.report.TrajectoryRecorder;
+import sitcov.world.MapGenerator;
+import sitcov.world.WorldMap;
+
+/**
+ * {@code replay}: a recorded run (a row of a results folder) or a map and seeds, run again without
+ * and with a fault and drawn side by side. A row is first judged again as the experiment judged it;
+ * if the replay does not give exactly what {@code runs.csv} holds, it says so and fails.
+ */
+final class ReplayCommand implements Command {
+    private static final int PIXELS_PER_METRE = 6;
+
+    @Override
+    public String name() {
+        return "replay";
+    }
+
+    @Override
+    public String synopsis() {
+        return "DIR --row N [--png FILE]\n"
+                + "       " + Main.PROGRAM + " replay DIR --replication R --driver D --map I [--fault F] [--png FILE]\n"
+                + "       " + Main.PROGRAM + " replay --seed S [--internal-seed I (default: S)] --fault F [--png FILE]\n"
+                + "       " + Main.PROGRAM + " replay --load FILE [--internal-seed I] --fault F [--png FILE]";
+    }
+
+    @Override
+    public String summary() {
+        return "run a recorded map (a row of runs.csv) or a map and seeds again, without and with a fault, side by side";
+    }
+
+    /** What to replay: the map, its internal seed, the fault (empty: fault-free only), and the row it must match. */
+    private record Case(WorldMap map, long internalSeed, Optional<Fault> fault, FaultyRuns length,
+                        Optional<ResultsRows.Row> row) {
+    }
+
+    @Override
+    public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
+        Options options = Options.parse(name(), args, Set.of("--row", "--replication", "--driver", "--map", "--fault",
+                "--seed", "--internal-seed", "--load", "--png"), Set.of());
+        Case c = options.positional().isEmpty() ? fromSeeds(options) : fromFolder(options);
+        String name = "replay-" + c.map().seed() + "-" + c.internalSeed() + c.fault().map(f -> "-fault-" + f.id()).orElse("")
+                + ".png";
+        Path png = options.outputFile("--png").orElse(Path.of(name));
+        JudgedMap judged = MapRunner.judge(c.map(), c.internalSeed(), c.fault().stream().toList(), c.length());
+        if (c.row().isPresent()) {
+            Optional<String> differs = differences(c.row().get(), judged);
+            if (differs.isPresent()) {
+                err.println("sitcov: replay: row " + c.row().get().number() + " does not replay: " + differs.get()
+                        + ". Was the folder written by another version of sitcov? (see its manifest)");
+                return ExitCode.FAILURE;
+            }
+            out.println("Row " + c.row().get().number() + " replays exactly: " + judged.faultFree().outcome()
+                    + c.fault().map(f -> "; fault " + f.id() + ": " + judged.verdicts().get(0).detection()).orElse(""));
+        }
+        try {
+            draw(c, judged, png);
+        } catch (IOException e) {
+            err.println("sitcov: replay: could not write " + png + ": " + e.getMessage());
+            return ExitCode.FAILURE;
+        }
+        out.println("Replay drawn to " + png + (c.fault().isPresent() ? " (left without the fault, right with it)" : ""));
+        return ExitCode.OK;
+    }
+
+    private static void draw(Case c, JudgedMap judged, Path png) throws IOException {
+        TrajectoryRecorder free = new TrajectoryRecorder();
+        var faultFree = Simulator.run(c.map(), c.internalSeed(), Set.of(), free).result();
+        if (c.fault().isEmpty()) {
+            RunRenderer renderer = new RunRenderer(PIXELS_PER_METRE);
+            renderer.writePng(renderer.render(c.map(), free, faultFree), png);
+            return;
+        }
+        TrajectoryRecorder faulty = new TrajectoryRecorder();
+        // the picture follows the faulty run to its end, even where the experiment stopped it at its verdict
+        var record = Simulator.run(c.map(), c.internalSeed(), Set.of(c.fault().get()), faulty);
+        FaultVerdict verdict = judged.verdicts().get(0);
+        String line = verdict.detection() + verdict.newAccident().map(a -> " by " + a.type() + " at tick " + a.tick()).orElse("")
+                + (c.length() == FaultyRuns.UNTIL_VERDICT && verdict.newAccident().isPresent()
+                        ? " (the experiment stopped this run there)" : "");
+        Files.createDirectories(png.toAbsolutePath().getParent());
+        new RunRenderer(PIXELS_PER_METRE).writePng(new ReplayPicture(PIXELS_PER_METRE).render(c.map(),
+                new ReplayPicture.Side(free, faultFree), new ReplayPicture.Side(faulty, record.result()),
+                record.activations().get(c.fault().get().ordinal()), line, verdict.newAccident()), png);
+    }
+
+    private static Optional<String> differences(ResultsRows.Row row, JudgedMap judged) {
+        RunSummary recorded = row.map().faultFree();
+        RunSummary replayed = RunSummary.of(judged.faultFree());
+        if (!recorded.equals(replayed)) {
+            return Optional.of("the fault-free run was recorded as " + recorded + ", the replay gives " + replayed);
+        }
+        if (row.outcome().isPresent()) {
+            FaultOutcome was = row.outcome().get();
+            FaultOutcome now = FaultOutcome.of(judged.verdicts().get(0));
+            if (!was.equals(now)) {
+                return Optional.of("fault " + was.fault().id() + " was recorded as " + was + ", the replay gives " + now);
+            }
+        }
+        return Optional.empty();
+    }
+
+    private static Case fromFolder(Options options) throws UsageException {
+        if (options.positional().size() != 1 || options.has("--seed") || options.has("--load")
+                || options.has("--internal-seed")) {
+            throw new UsageException("replay: name one results folder and a row of it (--row N, or --replication R"
+                    + " --driver D --map I [--fault F]); seeds and situation files are replayed without a folder.");
+        }
+        Path folder = Path.of(options.positional().get(0));
+        try {
+            ResultsRows.Row row;
+            if (options.has("--row")) {
+                if (options.has("--replication") || options.has("--driver") || options.has("--map") || options.has("--fault")) {
+                    throw new UsageException("replay: --row N names the run whole; drop --replication, --driver, --map"
+                            + " and --fault.");
+                }
+                row = ResultsRows.row(folder, options.count("--row", 1, Integer.MAX_VALUE).orElseThrow());
+            } else {
+                if (!options.has("--replication") || !options.has("--driver") || !options.has("--map")) {
+                    throw new UsageException("replay: name the run with --row N (the row of runs.csv under its header),"
+                            + " or with --replication R --driver D --map I [--fault F].");
+                }
+                row = ResultsRows.find(folder, options.count("--replication", 0, Integer.MAX_VALUE).orElseThrow(),
+                        options.value("--driver").orElseThrow(), options.count("--map", 0, Integer.MAX_VALUE).orElseThrow(),
+                        oneFault(options, false));
+            }
+            return new Case(ResultsRows.worldMap(folder, row.map()), row.map().internalSeed(), row.fault(),
+                    row.config().faultyRuns(), Optional.of(row));
+        } catch (IOException | IllegalArgumentException e) {
+            throw new UsageException("replay: " + e.getMessage() + ".");
+        }
+    }
+
+    private static Case fromSeeds(Options options) throws UsageException {
+        Optional<Long> seed = options.seed("--seed");
+        Optional<Path> load = options.inputFile("--load");
+        if (seed.isPresent() == load.isPresent()) {
+            throw new UsageException("replay: give a results folder and a row, or --seed S, or --load FILE.");
+        }
+        WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.loadRunnable("replay", load.get());
+        return new Case(map, options.seed("--internal-seed").orElse(map.seed()), oneFault(options, true),
+                FaultyRuns.TO_END, Optional.empty());
+    }
+
+    private static Optional<Fault> oneFault(Options options, boolean required) throws UsageException {
+        Optional<Set<Fault>> faults = options.faults("--fault");
+        if (faults.isEmpty() && !required) {
+            return Optional.empty();
+        }
+        if (faults.isEmpty() || faults.get().size() != 1) {
+            throw new UsageException("replay: --fault names one fault to run beside the fault-free run, e.g. --fault 17.");
+        }
+        return Optional.of(faults.get().iterator().next());
+    }
+}

@@ -1,0 +1,110 @@
+package sitcov.report;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.FontMetrics;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.image.BufferedImage;
+import java.util.Locale;
+import sitcov.faults.Activation;
+import sitcov.oracle.Accident;
+import sitcov.oracle.RunResult;
+import sitcov.world.WorldMap;
+
+/**
+ * A fault-free run and its faulty twin (same map, same internal seed) side by side, under a title
+ * that names them and the verdict; on the faulty side a ring where the fault first changed what
+ * the car did, and the first accident the fault-free run lacks ringed in red.
+ */
+public final class ReplayPicture {
+    /** One run to draw: its trajectory and result. */
+    public record Side(TrajectoryRecorder trajectory, RunResult result) {
+    }
+
+    private static final int TITLE = 64;
+    private static final Color EFFECT = new Color(0xFF8C00);
+    private static final Color NEW_ACCIDENT = new Color(0xD7263D);
+
+    private final int scale;
+
+    public ReplayPicture(int pixelsPerMetre) {
+        this.scale = pixelsPerMetre;
+    }
+
+    /**
+     * Both runs; {@code verdict} is one line (e.g. "FOUND by LEAVEROAD at tick 485"), {@code newAccident}
+     * the first accident the fault-free run lacks, if any.
+     */
+    public BufferedImage render(WorldMap map, Side faultFree, Side faulty, Activation activation, String verdict,
+                                java.util.Optional<Accident> newAccident) {
+        RunRenderer renderer = new RunRenderer(scale);
+        BufferedImage left = renderer.render(map, faultFree.trajectory(), faultFree.result());
+        BufferedImage right = renderer.render(map, faulty.trajectory(), faulty.result());
+        int gap = 12;
+        BufferedImage image = new BufferedImage(left.getWidth() + gap + right.getWidth(), TITLE + left.getHeight(),
+                BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            g.setColor(MapStyle.CAPTION);
+            g.fillRect(0, 0, image.getWidth(), image.getHeight());
+            g.drawImage(left, 0, TITLE, null);
+            g.drawImage(right, left.getWidth() + gap, TITLE, null);
+            title(g, left.getWidth(), gap, activation, verdict);
+            int dx = left.getWidth() + gap;
+            if (activation.effective()) {
+                int i = entryOf(faulty.trajectory(), activation.firstEffectiveTick());
+                if (i >= 0) {
+                    ring(g, dx + faulty.trajectory().x(i) * scale, TITLE + faulty.trajectory().y(i) * scale, EFFECT,
+                            "fault " + activation.fault().id() + " first acts, t=" + activation.firstEffectiveTick(), false);
+                }
+            }
+            newAccident.ifPresent(a -> ring(g, dx + a.x() * scale, TITLE + a.y() * scale, NEW_ACCIDENT,
+                    "first new accident, t=" + a.tick(), true));
+        } finally {
+            g.dispose();
+        }
+        return image;
+    }
+
+    private void title(Graphics2D g, int half, int gap, Activation activation, String verdict) {
+        g.setColor(MapStyle.TEXT);
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 18));
+        g.drawString("without the fault", 12, 26);
+        g.drawString(String.format(Locale.ROOT, "with fault %d (%s)", activation.fault().id(), activation.fault().label()),
+                half + gap + 12, 26);
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 14));
+        g.drawString("the same map and internal seed; the runs part where the fault first acts", 12, 50);
+        g.drawString(verdict, half + gap + 12, 50);
+    }
+
+    /** A ring with its label above it to the right, or below it (two rings near each other keep their labels apart). */
+    private void ring(Graphics2D g, double x, double y, Color colour, String label, boolean above) {
+        int r = Math.max(10, 3 * scale);
+        g.setStroke(new BasicStroke(3f));
+        g.setColor(colour);
+        g.drawOval((int) Math.round(x) - r, (int) Math.round(y) - r, 2 * r, 2 * r);
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 13));
+        FontMetrics fm = g.getFontMetrics();
+        int lx = (int) Math.round(x) + r + 4;
+        int ly = above ? (int) Math.round(y) - r : (int) Math.round(y) + r + fm.getAscent();
+        g.setColor(MapStyle.LABEL_BACKGROUND);
+        g.fillRect(lx - 3, ly - fm.getAscent() - 2, fm.stringWidth(label) + 6, fm.getHeight() + 4);
+        g.setColor(colour);
+        g.drawRect(lx - 3, ly - fm.getAscent() - 2, fm.stringWidth(label) + 6, fm.getHeight() + 4);
+        g.setColor(MapStyle.TEXT);
+        g.drawString(label, lx, ly);
+    }
+
+    private static int entryOf(TrajectoryRecorder t, long tick) {
+        for (int i = 0; i < t.ticks(); i++) {
+            if (t.tick(i) >= tick) {
+                return i;
+            }
+        }
+        return t.ticks() - 1;
+    }
+}

@@ -15,6 +15,9 @@ import sitcov.experiment.MapRunner;
 import sitcov.experiment.RunSummary;
 import sitcov.experiment.Simulator;
 import sitcov.faults.Fault;
+import sitcov.experiment.RunObserver;
+import sitcov.report.FrameRecorder;
+import sitcov.report.ReplayAnimation;
 import sitcov.report.ReplayPicture;
 import sitcov.report.ResultsRows;
 import sitcov.report.RunRenderer;
@@ -29,6 +32,9 @@ import sitcov.world.WorldMap;
  */
 final class ReplayCommand implements Command {
     private static final int PIXELS_PER_METRE = 6;
+    /** A frame each second of simulated time (5 ticks), and a GIF of at most 300 frames. */
+    private static final int FRAME_TICKS = 5;
+    private static final int MAX_FRAMES = 300;
 
     @Override
     public String name() {
@@ -37,10 +43,10 @@ final class ReplayCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "DIR --row N [--png FILE]\n"
+        return "DIR --row N [--png FILE] [--gif FILE]\n"
                 + "       " + Main.PROGRAM + " replay DIR --replication R --driver D --map I [--fault F] [--png FILE]\n"
-                + "       " + Main.PROGRAM + " replay --seed S [--internal-seed I (default: S)] --fault F [--png FILE]\n"
-                + "       " + Main.PROGRAM + " replay --load FILE [--internal-seed I] --fault F [--png FILE]";
+                + "       " + Main.PROGRAM + " replay --seed S [--internal-seed I (default: S)] --fault F [--png FILE] [--gif FILE]\n"
+                + "       " + Main.PROGRAM + " replay --load FILE [--internal-seed I] --fault F [--png FILE] [--gif FILE]";
     }
 
     @Override
@@ -56,11 +62,12 @@ final class ReplayCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--row", "--replication", "--driver", "--map", "--fault",
-                "--seed", "--internal-seed", "--load", "--png"), Set.of());
+                "--seed", "--internal-seed", "--load", "--png", "--gif"), Set.of());
         Case c = options.positional().isEmpty() ? fromSeeds(options) : fromFolder(options);
         String name = "replay-" + c.map().seed() + "-" + c.internalSeed() + c.fault().map(f -> "-fault-" + f.id()).orElse("")
                 + ".png";
         Path png = options.outputFile("--png").orElse(Path.of(name));
+        Optional<Path> gif = options.outputFile("--gif");
         JudgedMap judged = MapRunner.judge(c.map(), c.internalSeed(), c.fault().stream().toList(), c.length());
         if (c.row().isPresent()) {
             Optional<String> differs = differences(c.row().get(), judged);
@@ -73,26 +80,34 @@ final class ReplayCommand implements Command {
                     + c.fault().map(f -> "; fault " + f.id() + ": " + judged.verdicts().get(0).detection()).orElse(""));
         }
         try {
-            draw(c, judged, png);
+            draw(c, judged, png, gif);
         } catch (IOException e) {
-            err.println("sitcov: replay: could not write " + png + ": " + e.getMessage());
+            err.println("sitcov: replay: could not write " + png + gif.map(g -> " or " + g).orElse("") + ": " + e.getMessage());
             return ExitCode.FAILURE;
         }
         out.println("Replay drawn to " + png + (c.fault().isPresent() ? " (left without the fault, right with it)" : ""));
+        gif.ifPresent(g -> out.println("Animated in " + g));
         return ExitCode.OK;
     }
 
-    private static void draw(Case c, JudgedMap judged, Path png) throws IOException {
+    private static void draw(Case c, JudgedMap judged, Path png, Optional<Path> gif) throws IOException {
         TrajectoryRecorder free = new TrajectoryRecorder();
-        var faultFree = Simulator.run(c.map(), c.internalSeed(), Set.of(), free).result();
+        FrameRecorder freeFrames = new FrameRecorder(FRAME_TICKS);
+        var faultFree = Simulator.run(c.map(), c.internalSeed(), Set.of(), both(free, freeFrames)).result();
         if (c.fault().isEmpty()) {
             RunRenderer renderer = new RunRenderer(PIXELS_PER_METRE);
             renderer.writePng(renderer.render(c.map(), free, faultFree), png);
+            if (gif.isPresent()) {
+                int step = step(freeFrames.frames().size());
+                ReplayAnimation.write(c.map(), fewer(freeFrames.frames(), step), fewer(freeFrames.frames(), step),
+                        new String[] {"without faults", "without faults"}, gif.get());
+            }
             return;
         }
         TrajectoryRecorder faulty = new TrajectoryRecorder();
+        FrameRecorder faultyFrames = new FrameRecorder(FRAME_TICKS);
         // the picture follows the faulty run to its end, even where the experiment stopped it at its verdict
-        var record = Simulator.run(c.map(), c.internalSeed(), Set.of(c.fault().get()), faulty);
+        var record = Simulator.run(c.map(), c.internalSeed(), Set.of(c.fault().get()), both(faulty, faultyFrames));
         FaultVerdict verdict = judged.verdicts().get(0);
         String line = verdict.detection() + verdict.newAccident().map(a -> " by " + a.type() + " at tick " + a.tick()).orElse("")
                 + (c.length() == FaultyRuns.UNTIL_VERDICT && verdict.newAccident().isPresent()
@@ -101,6 +116,38 @@ final class ReplayCommand implements Command {
         new RunRenderer(PIXELS_PER_METRE).writePng(new ReplayPicture(PIXELS_PER_METRE).render(c.map(),
                 new ReplayPicture.Side(free, faultFree), new ReplayPicture.Side(faulty, record.result()),
                 record.activations().get(c.fault().get().ordinal()), line, verdict.newAccident()), png);
+        if (gif.isPresent()) {
+            // one step for both sides, so their frames show the same ticks
+            int step = step(Math.max(freeFrames.frames().size(), faultyFrames.frames().size()));
+            ReplayAnimation.write(c.map(), fewer(freeFrames.frames(), step), fewer(faultyFrames.frames(), step),
+                    new String[] {"without the fault", "with fault " + c.fault().get().id()}, gif.get());
+        }
+    }
+
+    private static RunObserver both(RunObserver a, RunObserver b) {
+        return (tick, scene, detector) -> {
+            a.afterTick(tick, scene, detector);
+            b.afterTick(tick, scene, detector);
+        };
+    }
+
+    /** Every how many frames one is kept, for at most {@link #MAX_FRAMES}: a long run plays faster, never for minutes. */
+    private static int step(int frames) {
+        return Math.max(1, (frames + MAX_FRAMES - 1) / MAX_FRAMES);
+    }
+
+    private static List<FrameRecorder.Frame> fewer(List<FrameRecorder.Frame> frames, int step) {
+        if (step <= 1) {
+            return frames;
+        }
+        List<FrameRecorder.Frame> kept = new java.util.ArrayList<>();
+        for (int i = 0; i < frames.size(); i += step) {
+            kept.add(frames.get(i));
+        }
+        if (kept.get(kept.size() - 1) != frames.get(frames.size() - 1)) {
+            kept.add(frames.get(frames.size() - 1));
+        }
+        return kept;
     }
 
     private static Optional<String> differences(ResultsRows.Row row, JudgedMap judged) {

@@ -11,6 +11,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
+import javax.imageio.ImageReader;
+import javax.imageio.stream.ImageInputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import sitcov.report.ResultsFolder;
@@ -30,12 +32,31 @@ class ReplayCommandTest {
     @Test
     void aRowOfAResultsFolderReplaysExactlyAndIsDrawnBesideItsFaultFreeTwin(@TempDir Path dir) throws Exception {
         Path png = dir.resolve("row.png");
+        Path gif = dir.resolve("row.gif");
         CliRunner r = CliRunner.run("replay", ResultsFolders.tinyReference().toString(), "--row",
-                Integer.toString(firstFoundRow()), "--png", png.toString());
+                Integer.toString(firstFoundRow()), "--png", png.toString(), "--gif", gif.toString());
         assertEquals(0, r.exitCode(), r.err());
         assertTrue(r.out().contains("replays exactly") && r.out().contains(": FOUND"), r.out());
         BufferedImage image = ImageIO.read(png.toFile());
         assertTrue(image.getWidth() > 2 * image.getHeight(), "two maps side by side: " + image.getWidth() + "x" + image.getHeight());
+        ImageReader reader = ImageIO.getImageReadersByFormatName("gif").next();
+        try (ImageInputStream in = ImageIO.createImageInputStream(gif.toFile())) {
+            reader.setInput(in);
+            int frames = reader.getNumImages(true);
+            assertTrue(frames >= 2, frames + " frames");
+            BufferedImage first = reader.read(0);
+            BufferedImage last = reader.read(frames - 1);
+            assertTrue(first.getWidth() > 2 * first.getHeight(), "both runs side by side in the animation");
+            int moved = 0;
+            for (int y = 0; y < first.getHeight(); y += 2) {
+                for (int x = 0; x < first.getWidth(); x += 2) {
+                    moved += first.getRGB(x, y) != last.getRGB(x, y) ? 1 : 0;
+                }
+            }
+            assertTrue(moved > 20, "the cars moved between the first and the last frame: " + moved + " pixels differ");
+        } finally {
+            reader.dispose();
+        }
     }
 
     @Test

@@ -82,6 +82,8 @@ public final class ResultsFinisher {
             OutputFile.writeLines(folder.resolve(ResultsFolder.COVERAGE_CURVE), tables.curve());
             ExperimentFigures.writeAll(config, summary, journal, folder);
             AnalysisFiles.write(config, summary, folder);
+            List<MapRun> inOrder = JournalFiles.inOrder(config, journal).stream().map(Journal.Entry::run).toList();
+            OutputFile.writeString(folder.resolve(ResultsFolder.REPORT), HtmlReport.html(folder, config, inOrder));
         }
         return summary;
     }

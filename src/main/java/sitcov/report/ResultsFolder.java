@@ -40,6 +40,8 @@ public final class ResultsFolder {
     public static final String CELL_FAULTS = "cell-faults.csv";
     /** Per fault: how much of the variation in detection the cell explains, against chance. */
     public static final String UNIFORMITY = "uniformity.csv";
+    /** Everything on one self-contained page: verdict, tables, figures, grid, the maps that found each fault. */
+    public static final String REPORT = "report.html";
     public static final String FIG_FORESTPLOT = "fig-faults-odds-ratios.png";
     public static final String FIG_MEASURES = "fig-measures-by-driver.png";
     public static final String FIG_DISCOVERY = "fig-faults-found-vs-ticks.png";

@@ -1,12 +1,8 @@
 package sitcov.experiment;
 
 import java.util.Set;
-import sitcov.engine.SimState;
 import sitcov.faults.Fault;
-import sitcov.faults.FaultSwitchboard;
-import sitcov.oracle.AccidentDetector;
 import sitcov.oracle.RunResult;
-import sitcov.vehicles.Scene;
 import sitcov.world.WorldMap;
 
 /**
@@ -33,19 +29,13 @@ public final class Simulator {
 
     private static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer,
                                  VerdictWatch watch) {
-        SimState state = new SimState(internalSeed);
-        FaultSwitchboard switchboard = new FaultSwitchboard(faults, state::tick);
-        Scene scene = Scene.start(map, state, switchboard);
-        AccidentDetector detector = new AccidentDetector(scene);
-        state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
-        while (state.step()) {
-            observer.afterTick(state.tick(), scene, detector);
-            if (watch != null && watch.settled(detector)) {
-                detector.stopAtVerdict(state);
+        LiveRun run = new LiveRun(map, internalSeed, faults);
+        while (run.step()) {
+            observer.afterTick(run.tick(), run.scene(), run.detector());
+            if (watch != null && watch.settled(run.detector())) {
+                run.detector().stopAtVerdict(run.state());
             }
         }
-        RunResult result = new RunResult(map.seed(), internalSeed, detector.outcome(), detector.accidents(),
-                detector.excusedContacts(), detector.ticks());
-        return new RunRecord(result, faults, switchboard.activations());
+        return run.record();
     }
 }

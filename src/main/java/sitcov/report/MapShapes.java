@@ -14,7 +14,7 @@ import sitcov.geom.Rect;
  * The map's symbols, drawn on a graphics whose user space is metres (so the legend can draw the
  * very same symbols as the map, just somewhere else).
  */
-final class MapShapes {
+public final class MapShapes {
     /** How far the autonomous car's heading arrow reaches past its front, in metres. */
     static final double AR_ARROW_AHEAD = 2.6;
 
@@ -26,7 +26,7 @@ final class MapShapes {
         this.style = style;
     }
 
-    static Path2D polygon(Box box) {
+    public static Path2D polygon(Box box) {
         double[] c = box.corners();
         Path2D.Double p = new Path2D.Double();
         p.moveTo(c[0], c[1]);

@@ -1,0 +1,67 @@
+package sitcov.cli;
+
+import java.awt.GraphicsEnvironment;
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import javax.swing.SwingUtilities;
+import sitcov.experiment.LiveRun;
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSet;
+import sitcov.viewer.RunPainter;
+import sitcov.viewer.ViewerWindow;
+import sitcov.world.MapGenerator;
+import sitcov.world.WorldMap;
+
+/** {@code view}: a run in a window as it happens, beside its fault-free twin when faults are given. */
+final class ViewCommand implements Command {
+    private static final int PIXELS_PER_METRE = 4;
+
+    @Override
+    public String name() {
+        return "view";
+    }
+
+    @Override
+    public String synopsis() {
+        return "--seed S [--internal-seed I (default: S)] [--faults SET] | --load FILE [--internal-seed I] [--faults SET]";
+    }
+
+    @Override
+    public String summary() {
+        return "watch a run live in a window (Swing): play, pause, step, speed, restart; a faulty run beside its twin";
+    }
+
+    @Override
+    public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
+        Options options = Options.parse(name(), args, Set.of("--seed", "--internal-seed", "--load", "--faults"), Set.of());
+        options.noPositional();
+        Optional<Long> seed = options.seed("--seed");
+        Optional<Path> load = options.inputFile("--load");
+        if (seed.isPresent() == load.isPresent()) {
+            throw new UsageException("view: give --seed S to generate a map or --load FILE to read one.");
+        }
+        WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.loadRunnable("view", load.get());
+        long internal = options.seed("--internal-seed").orElse(map.seed());
+        Set<Fault> faults = options.faults("--faults").orElse(Set.of());
+        if (GraphicsEnvironment.isHeadless()) {
+            throw new UsageException("view: there is no display here; run it on a desktop, or under a virtual one"
+                    + " (xvfb-run sitcov view ...), or draw the run with 'replay --seed S --fault F --gif FILE'.");
+        }
+        SwingUtilities.invokeLater(() -> new ViewerWindow(() -> {
+            List<RunPainter> painters = new ArrayList<>();
+            if (!faults.isEmpty()) {
+                painters.add(new RunPainter(new LiveRun(map, internal, Set.of()), "without faults", PIXELS_PER_METRE));
+            }
+            painters.add(new RunPainter(new LiveRun(map, internal, faults), faults.isEmpty() ? "seed " + map.seed()
+                    : "with " + (faults.size() == 1 ? "fault " + faults.iterator().next().id() + " ("
+                            + faults.iterator().next().label() + ")" : "faults " + FaultSet.format(faults)), PIXELS_PER_METRE));
+            return painters;
+        }).show());
+        out.println("view: a window shows map " + map.seed() + " (internal seed " + internal + "); close it to end.");
+        return ExitCode.OK;
+    }
+}

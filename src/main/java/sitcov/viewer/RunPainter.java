@@ -1,0 +1,144 @@
+package sitcov.viewer;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Dimension;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.AffineTransform;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Path2D;
+import java.awt.image.BufferedImage;
+import java.util.List;
+import java.util.Locale;
+import sitcov.experiment.LiveRun;
+import sitcov.geom.Bearing;
+import sitcov.oracle.Accident;
+import sitcov.report.MapRenderer;
+import sitcov.report.MapShapes;
+import sitcov.vehicles.AutonomousCar;
+import sitcov.vehicles.Vehicle;
+import sitcov.world.WorldMap;
+
+/**
+ * Paints one live run as it stands: the map (drawn once), what the car's sensors cover (the camera's
+ * 90° fan, 10 m, and the LIDAR's half disc, 25 m), every vehicle, each accident where it happened,
+ * and a header with the car's state. It only reads the run: the model never knows it is watched.
+ */
+public final class RunPainter {
+    static final int HEADER = 58;
+    static final Color CAR = new Color(0x00E5FF);
+    static final Color MOVING = new Color(0xB84FD0);
+    static final Color ACCIDENT = new Color(0xD7263D);
+    private static final Color CAMERA = new Color(255, 230, 80, 70);
+    private static final Color LIDAR = new Color(255, 255, 255, 150);
+    private static final double CAMERA_RANGE = 10;
+    private static final double LIDAR_RANGE = 25;
+
+    private final LiveRun run;
+    private final String title;
+    private final int scale;
+    private final BufferedImage base;
+
+    public RunPainter(LiveRun run, String title, int pixelsPerMetre) {
+        this.run = run;
+        this.title = title;
+        this.scale = pixelsPerMetre;
+        WorldMap map = run.map();
+        this.base = new MapRenderer(pixelsPerMetre).render(new WorldMap(map.layout(), List.of(),
+                map.movingCarsRequested(), map.movingCarOmissions()));
+    }
+
+    public LiveRun run() {
+        return run;
+    }
+
+    public int pixelsPerMetre() {
+        return scale;
+    }
+
+    public Dimension size() {
+        return new Dimension(base.getWidth(), HEADER + base.getHeight());
+    }
+
+    public void paint(Graphics2D g) {
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+        g.setColor(new Color(0xF3F1EC));
+        g.fillRect(0, 0, base.getWidth(), HEADER);
+        header(g);
+        g.drawImage(base, 0, HEADER, null);
+        AffineTransform saved = g.getTransform();
+        g.translate(0, HEADER);
+        g.scale(scale, scale);
+        AutonomousCar car = run.scene().autonomousCar();
+        sensors(g, car);
+        for (Vehicle v : run.scene().vehicles()) {
+            if (v.isActive() && v.id() != AutonomousCar.ID) {
+                body(g, v, MOVING);
+            }
+        }
+        body(g, car, CAR);
+        g.setTransform(saved);
+        accidents(g, run.detector().accidents());
+    }
+
+    private void header(Graphics2D g) {
+        AutonomousCar car = run.scene().autonomousCar();
+        g.setColor(Color.BLACK);
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 14));
+        g.drawString(title, 8, 18);
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        g.drawString(String.format(Locale.ROOT, "%s · %.1f km/h · lane %s · %s%s%s · steered by %s · speed set by %s",
+                run.tick() < 0 ? "not started (press Play or Step)" : "tick " + run.tick(), car.speed() * 18, car.lane(), car.overtakingStage().name().toLowerCase(Locale.ROOT).replace('_', ' '),
+                car.isCrossingJunction() ? " · crossing a junction" : "", car.isWaitingAtJunction() ? " · waiting" : "",
+                car.steeredBy() == null ? "nothing yet" : car.steeredBy(), car.limitedBy() == null ? "nothing"
+                        : car.limitedBy()), 8, 36);
+        List<Accident> accidents = run.detector().accidents();
+        g.setColor(accidents.isEmpty() ? Color.DARK_GRAY : ACCIDENT);
+        g.drawString(accidents.isEmpty() ? "no accident" : accidents.size() + " accident" + (accidents.size() == 1 ? "" : "s")
+                + ", the last " + accidents.get(accidents.size() - 1).type() + " at tick "
+                + accidents.get(accidents.size() - 1).tick(), 8, 52);
+    }
+
+    private void sensors(Graphics2D g, AutonomousCar car) {
+        g.setColor(CAMERA);
+        g.fill(fan(car.x(), car.y(), car.heading(), 45, CAMERA_RANGE));
+        g.setColor(LIDAR);
+        g.setStroke(new BasicStroke(1.5f / scale));
+        g.draw(fan(car.x(), car.y(), car.heading(), 90, LIDAR_RANGE));
+    }
+
+    /** A circular sector from (x, y) spanning {@code half} degrees either side of {@code bearing}. */
+    static Path2D fan(double x, double y, double bearing, double half, double range) {
+        Path2D.Double p = new Path2D.Double();
+        p.moveTo(x, y);
+        for (double a = -half; a <= half + 1e-9; a += 5) {
+            p.lineTo(x + range * Bearing.dx(bearing + a), y + range * Bearing.dy(bearing + a));
+        }
+        p.closePath();
+        return p;
+    }
+
+    private void body(Graphics2D g, Vehicle v, Color fill) {
+        var shape = MapShapes.polygon(v.footprint());
+        g.setColor(fill);
+        g.fill(shape);
+        g.setColor(Color.BLACK);
+        g.setStroke(new BasicStroke(1f / scale));
+        g.draw(shape);
+    }
+
+    private void accidents(Graphics2D g, List<Accident> accidents) {
+        g.setStroke(new BasicStroke(2.5f));
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 11));
+        for (Accident a : accidents) {
+            double px = a.x() * scale;
+            double py = HEADER + a.y() * scale;
+            g.setColor(ACCIDENT);
+            g.draw(new Ellipse2D.Double(px - 9, py - 9, 18, 18));
+            g.drawString(a.type().name() + " t=" + a.tick(), (float) px + 11, (float) py - 6);
+        }
+    }
+}

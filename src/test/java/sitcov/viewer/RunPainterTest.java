@@ -1,0 +1,66 @@
+package sitcov.viewer;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.Graphics2D;
+import java.awt.image.BufferedImage;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import sitcov.experiment.LiveRun;
+import sitcov.experiment.Simulator;
+import sitcov.vehicles.AutonomousCar;
+import sitcov.world.MapGenerator;
+import sitcov.world.WorldMap;
+
+/** The viewer's painting, headless: painted into an image, the car is where the model says it is. */
+class RunPainterTest {
+    private static BufferedImage paint(RunPainter painter) {
+        BufferedImage image = new BufferedImage(painter.size().width, painter.size().height, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        painter.paint(g);
+        g.dispose();
+        return image;
+    }
+
+    /** The colour at the centre of the car's footprint, in the painted image. */
+    private static int carPixel(RunPainter painter, BufferedImage image) {
+        AutonomousCar car = painter.run().scene().autonomousCar();
+        var centre = car.footprint().centre();
+        int x = (int) Math.round(centre.x() * painter.pixelsPerMetre());
+        int y = RunPainter.HEADER + (int) Math.round(centre.y() * painter.pixelsPerMetre());
+        return image.getRGB(x, y) & 0xFFFFFF;
+    }
+
+    @Test
+    void theCarIsPaintedWhereTheRunHasItAndFollowsItAsTheRunIsStepped() {
+        WorldMap map = MapGenerator.generate(1);
+        RunPainter painter = new RunPainter(new LiveRun(map, 1, Set.of()), "test", 4);
+        for (int i = 0; i < 60; i++) {
+            painter.run().step();
+        }
+        BufferedImage image = paint(painter);
+        assertEquals(RunPainter.CAR.getRGB() & 0xFFFFFF, carPixel(painter, image), "the car's colour at its centre");
+        var before = painter.run().scene().autonomousCar().footprint().centre();
+        for (int i = 0; i < 40; i++) {
+            painter.run().step();
+        }
+        var after = painter.run().scene().autonomousCar().footprint().centre();
+        assertTrue(before.distanceTo(after.x(), after.y()) > 5, "the car moved " + before + " -> " + after);
+        BufferedImage later = paint(painter);
+        assertEquals(RunPainter.CAR.getRGB() & 0xFFFFFF, carPixel(painter, later));
+        int oldX = (int) Math.round(before.x() * 4);
+        int oldY = RunPainter.HEADER + (int) Math.round(before.y() * 4);
+        assertTrue((later.getRGB(oldX, oldY) & 0xFFFFFF) != (RunPainter.CAR.getRGB() & 0xFFFFFF), "no car left behind");
+    }
+
+    @Test
+    void aLiveRunSteppedToTheEndIsTheSimulatorsRun() {
+        WorldMap map = MapGenerator.generate(7);
+        LiveRun live = new LiveRun(map, 7, Set.of());
+        while (live.step()) {
+            // the viewer steps it frame by frame; here all at once
+        }
+        assertEquals(Simulator.run(map, 7), live.record().result());
+    }
+}

@@ -35,7 +35,7 @@ final class FaultCalibrationTable {
         out.printf(Locale.ROOT, "Fault-free runs with any accident: %d (%.1f%%). FOUND = an accident the fault-free"
                 + " run of the same seeds lacks;%npaper = any accident in the faulty run (the paper's notion).%n%n",
                 background, 100.0 * background / maps);
-        out.printf(Locale.ROOT, "%3s  %-34s %8s %9s %7s  %-15s %7s  %-28s %s%n", "id", "fault", "reached", "effective",
+        out.printf(Locale.ROOT, "%3s  %-34s %8s %9s %7s  %-15s %7s  %-60s  %s%n", "id", "fault", "reached", "effective",
                 "FOUND", "95% CI", "paper", "FOUND by", "e.g. map");
         int column = 0;
         for (Fault fault : faults.stream().sorted().toList()) {
@@ -72,7 +72,7 @@ final class FaultCalibrationTable {
         String ci = String.format(Locale.ROOT, "[%.1f, %.1f]", 100 * p.wilsonLow(), 100 * p.wilsonHigh());
         String types = by.isEmpty() ? "-" : by.entrySet().stream()
                 .map(e -> shortName(e.getKey()) + " " + e.getValue()).collect(Collectors.joining(", "));
-        out.printf(Locale.ROOT, "%3d  %-34s %7.1f%% %8.1f%% %6.1f%%  %-15s %6.1f%%  %-28s %s%n", fault.id(), fault.label(),
+        out.printf(Locale.ROOT, "%3d  %-34s %7.1f%% %8.1f%% %6.1f%%  %-15s %6.1f%%  %-60s  %s%n", fault.id(), fault.label(),
                 pct(reached), pct(effective), 100 * p.share(), ci, pct(paper), types, example < 0 ? "-" : example);
     }
 

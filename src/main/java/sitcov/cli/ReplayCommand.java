@@ -109,9 +109,7 @@ final class ReplayCommand implements Command {
         // the picture follows the faulty run to its end, even where the experiment stopped it at its verdict
         var record = Simulator.run(c.map(), c.internalSeed(), Set.of(c.fault().get()), both(faulty, faultyFrames));
         FaultVerdict verdict = judged.verdicts().get(0);
-        String line = verdict.detection() + verdict.newAccident().map(a -> " by " + a.type() + " at tick " + a.tick()).orElse("")
-                + (c.length() == FaultyRuns.UNTIL_VERDICT && verdict.newAccident().isPresent()
-                        ? " (the experiment stopped this run there)" : "");
+        String line = ReplayPicture.verdictLine(verdict, c.length());
         Files.createDirectories(png.toAbsolutePath().getParent());
         new RunRenderer(PIXELS_PER_METRE).writePng(new ReplayPicture(PIXELS_PER_METRE).render(c.map(),
                 new ReplayPicture.Side(free, faultFree), new ReplayPicture.Side(faulty, record.result()),

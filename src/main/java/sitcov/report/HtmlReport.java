@@ -63,7 +63,7 @@ final class HtmlReport {
             h.append("<p><img src=\"").append(esc(fig)).append("\" alt=\"").append(esc(fig)).append("\"></p>\n");
         }
         grid(h, folder, config);
-        faults(h, config, inOrder);
+        faults(h, folder, config, inOrder);
         section(h, "Situations against faults: the uniformity test", folder, ResultsFolder.UNIFORMITY);
         h.append("<p class=\"muted\">Every table above is a CSV file in this folder; runs.csv has one row per"
                 + " simulated run.</p></body></html>\n");
@@ -151,7 +151,7 @@ final class HtmlReport {
     }
 
     /** For each fault, the first maps that found it, each with its row of runs.csv and the command replaying it. */
-    private static void faults(StringBuilder h, ExperimentConfig config, List<MapRun> inOrder) {
+    private static void faults(StringBuilder h, Path folder, ExperimentConfig config, List<MapRun> inOrder) {
         h.append("<h2>Maps that found each fault</h2><p class=\"muted\">DIR is this folder; the replay draws the"
                 + " fault-free run and the faulty one side by side (add --gif FILE to watch them)</p>");
         var faults = config.faultList();
@@ -178,6 +178,13 @@ final class HtmlReport {
                     .append(total > found.size() ? " (the first " + found.size() + " listed)" : "").append("</p>");
             if (!found.isEmpty()) {
                 h.append("<ul>").append(String.join("", found)).append("</ul>");
+            }
+            Path picture = ReplayGallery.picture(folder, faults.get(f));
+            if (Files.isRegularFile(picture)) {
+                String name = ReplayGallery.FOLDER + "/" + picture.getFileName();
+                h.append("<p>The first of them, replayed (left without the fault, right with it):<br><a href=\"").append(name)
+                        .append("\"><img src=\"").append(name).append("\" alt=\"replay of the first map that found fault ")
+                        .append(faults.get(f).id()).append("\"></a></p>");
             }
         }
     }

@@ -70,6 +70,24 @@ public final class ReplayPicture {
         return image;
     }
 
+    /** The verdict in one line, saying where the experiment stopped the faulty run. */
+    public static String verdictLine(sitcov.experiment.FaultVerdict verdict, sitcov.experiment.FaultyRuns length) {
+        return verdict.detection() + verdict.newAccident().map(a -> " by " + a.type() + " at tick " + a.tick()).orElse("")
+                + (length == sitcov.experiment.FaultyRuns.UNTIL_VERDICT && verdict.newAccident().isPresent()
+                        ? " (the experiment stopped this run there)" : "");
+    }
+
+    /** Runs the map without and with {@code verdict}'s fault (the faulty run to its end) and draws both. */
+    public BufferedImage render(WorldMap map, long internalSeed, sitcov.experiment.FaultVerdict verdict,
+                                sitcov.experiment.FaultyRuns length) {
+        TrajectoryRecorder free = new TrajectoryRecorder();
+        RunResult faultFree = sitcov.experiment.Simulator.run(map, internalSeed, java.util.Set.of(), free).result();
+        TrajectoryRecorder faulty = new TrajectoryRecorder();
+        var record = sitcov.experiment.Simulator.run(map, internalSeed, java.util.Set.of(verdict.fault()), faulty);
+        return render(map, new Side(free, faultFree), new Side(faulty, record.result()),
+                record.activations().get(verdict.fault().ordinal()), verdictLine(verdict, length), verdict.newAccident());
+    }
+
     private void title(Graphics2D g, int half, int gap, Activation activation, String verdict) {
         g.setColor(MapStyle.TEXT);
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 18));

@@ -83,6 +83,7 @@ public final class ResultsFinisher {
             ExperimentFigures.writeAll(config, summary, journal, folder);
             AnalysisFiles.write(config, summary, folder);
             List<MapRun> inOrder = JournalFiles.inOrder(config, journal).stream().map(Journal.Entry::run).toList();
+            ReplayGallery.write(folder, config, inOrder);
             OutputFile.writeString(folder.resolve(ResultsFolder.REPORT), HtmlReport.html(folder, config, inOrder));
         }
         return summary;

@@ -75,10 +75,7 @@ class MergeCommandTest {
         assertEquals(2, whole.exitCode());
         assertTrue(whole.err().contains("holds a whole run, not a shard"), whole.err());
         Path copy = out.resolve("s2");
-        Files.createDirectories(copy);
-        for (String f : ResultsFolders.resultFiles(shards.resolve("s2"))) {
-            Files.copy(shards.resolve("s2").resolve(f), copy.resolve(f));
-        }
+        ResultsFolders.copy(shards.resolve("s2"), copy);
         Files.writeString(copy.resolve(ResultsFolder.MANIFEST),
                 Files.readString(copy.resolve(ResultsFolder.MANIFEST)).replace("complete=true", "complete=false"));
         CliRunner incomplete = CliRunner.run("merge", shard(1), copy.toString(), shard(3), "--out", out.resolve("i").toString());

@@ -9,7 +9,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
@@ -62,12 +61,7 @@ class ReplayCommandTest {
     @Test
     void aRowThatDoesNotReplayAsRecordedFailsSayingSo(@TempDir Path dir) throws Exception {
         Path copy = dir.resolve("tampered");
-        Files.createDirectories(copy);
-        try (Stream<Path> files = Files.list(ResultsFolders.tinyReference())) {
-            for (Path f : files.toList()) {
-                Files.copy(f, copy.resolve(f.getFileName()));
-            }
-        }
+        ResultsFolders.copy(ResultsFolders.tinyReference(), copy);
         int row = firstFoundRow();
         List<String> rows = new ArrayList<>(Files.readAllLines(copy.resolve(ResultsFolder.RUNS)));
         // the fault-free row of the same map: its ticks column (14th) recorded one tick more than it ran

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import sitcov.report.ResultsFolder;
@@ -15,12 +14,7 @@ class ReportCommandTest {
     @Test
     void aFolderWhoseStatisticsWereLostGetsTheSameOnesBackFromItsJournal(@TempDir Path dir) throws Exception {
         Path copy = dir.resolve("copy");
-        Files.createDirectories(copy);
-        try (Stream<Path> files = Files.list(ResultsFolders.tinyReference())) {
-            for (Path f : files.toList()) {
-                Files.copy(f, copy.resolve(f.getFileName()));
-            }
-        }
+        ResultsFolders.copy(ResultsFolders.tinyReference(), copy);
         Files.delete(copy.resolve(ResultsFolder.STATS));
         Files.delete(copy.resolve(ResultsFolder.VERDICT));
         Files.writeString(copy.resolve(ResultsFolder.SUMMARY), "stale\n");

@@ -30,10 +30,25 @@ final class ResultsFolders {
         return reference;
     }
 
-    /** The files of a folder that hold results (everything but the timed files), sorted by name. */
+    /** The files of a folder that hold results (everything but the timed files), as paths within it, sorted. */
     static List<String> resultFiles(Path folder) throws IOException {
-        try (Stream<Path> s = Files.list(folder)) {
-            return s.map(p -> p.getFileName().toString()).filter(n -> !ResultsFolder.TIMED.contains(n)).sorted().toList();
+        try (Stream<Path> s = Files.walk(folder)) {
+            return s.filter(Files::isRegularFile).map(p -> folder.relativize(p).toString().replace('\\', '/'))
+                    .filter(n -> !ResultsFolder.TIMED.contains(n)).sorted().toList();
+        }
+    }
+
+    /** A copy of a results folder, its subfolders included. */
+    static void copy(Path from, Path to) throws IOException {
+        try (Stream<Path> s = Files.walk(from)) {
+            for (Path p : s.toList()) {
+                Path target = to.resolve(from.relativize(p).toString());
+                if (Files.isDirectory(p)) {
+                    Files.createDirectories(target);
+                } else {
+                    Files.copy(p, target);
+                }
+            }
         }
     }
 

@@ -1,0 +1,50 @@
+package sitcov.report;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.FaultVerdict;
+import sitcov.experiment.JudgedMap;
+import sitcov.experiment.MapRun;
+import sitcov.experiment.MapRunner;
+import sitcov.faults.Fault;
+
+/**
+ * The replay picture of the first map that found each fault, for the report: {@code replays/fault-N.png}
+ * (a bounded number: one a fault, so a large experiment's report stays quick to write and to open).
+ */
+final class ReplayGallery {
+    static final String FOLDER = "replays";
+    private static final int PIXELS_PER_METRE = 4;
+
+    private ReplayGallery() {
+    }
+
+    static Path picture(Path folder, Fault fault) {
+        return folder.resolve(FOLDER).resolve("fault-" + fault.id() + ".png");
+    }
+
+    static void write(Path folder, ExperimentConfig config, List<MapRun> inOrder) throws IOException {
+        List<Fault> faults = config.faultList();
+        for (int f = 0; f < faults.size(); f++) {
+            for (MapRun run : inOrder) {
+                if (run.faults().get(f).found(false)) {
+                    draw(folder, config, run, faults.get(f));
+                    break;
+                }
+            }
+        }
+    }
+
+    private static void draw(Path folder, ExperimentConfig config, MapRun run, Fault fault) throws IOException {
+        var map = ResultsRows.worldMap(folder, run);
+        JudgedMap judged = MapRunner.judge(map, run.internalSeed(), List.of(fault), config.faultyRuns());
+        FaultVerdict verdict = judged.verdicts().get(0);
+        Path file = picture(folder, fault);
+        Files.createDirectories(file.getParent());
+        MapRenderer.writeAtomically(new ReplayPicture(PIXELS_PER_METRE).render(map, run.internalSeed(), verdict,
+                config.faultyRuns()), file);
+    }
+}

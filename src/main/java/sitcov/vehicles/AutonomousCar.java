@@ -98,6 +98,7 @@ public final class AutonomousCar implements Vehicle, Steppable {
 
     private LaneEstimate lookForMarkings() {
         LaneEstimate seen = camera.look(body.x(), body.y(), lane, cameraSettings);
+        camera.keepHits();
         if (cameraSettings != CameraSettings.STANDARD) {
             LaneEstimate correct = camera.look(body.x(), body.y(), lane, CameraSettings.STANDARD);
             CameraFaults.record(faults, !seen.equals(correct));
@@ -193,6 +194,40 @@ public final class AutonomousCar implements Vehicle, Steppable {
     /** Whether it is turning through a junction square (being over the centre line is then justified). */
     public boolean isCrossingJunction() {
         return junctions.isCrossing();
+    }
+
+    /** How many of the camera's rays met a marking in this tick's look (a viewer draws them). */
+    public int cameraHits() {
+        return camera.keptHits();
+    }
+
+    public double cameraHitX(int hit) {
+        return camera.keptX(hit);
+    }
+
+    public double cameraHitY(int hit) {
+        return camera.keptY(hit);
+    }
+
+    /** How many rays of the LIDAR's last sweep hit something; where it stood and where they hit. */
+    public int lidarHits() {
+        return lidar.hits();
+    }
+
+    public double lidarOriginX() {
+        return lidar.originX();
+    }
+
+    public double lidarOriginY() {
+        return lidar.originY();
+    }
+
+    public double lidarHitX(int hit) {
+        return lidar.worldX(hit);
+    }
+
+    public double lidarHitY(int hit) {
+        return lidar.worldY(hit);
     }
 
     public boolean isWaitingAtJunction() {

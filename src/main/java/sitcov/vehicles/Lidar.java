@@ -33,6 +33,9 @@ final class Lidar {
     private final double[] hitV = new double[RAYS];
     private final boolean[] hitParked = new boolean[RAYS];
     private int hits;
+    private double originX;
+    private double originY;
+    private Compass frame = Compass.NORTH;
 
     Lidar(RoadNetwork network) {
         this.roadReach = new RoadReach(network);
@@ -44,6 +47,9 @@ final class Lidar {
      */
     int sweep(double x, double y, double centreBearing, Compass lane, Scene scene, Vehicle self) {
         hits = 0;
+        originX = x;
+        originY = y;
+        frame = lane;
         int n = 0;
         double reachSq = (RANGE + 5) * (RANGE + 5);
         double fx = Math.sin(Math.toRadians(centreBearing));
@@ -143,6 +149,23 @@ final class Lidar {
 
     double v(int hit) {
         return hitV[hit];
+    }
+
+    /** Where the last sweep's hit {@code hit} lies in the world (for viewers). */
+    double worldX(int hit) {
+        return originX + hitU[hit] * frame.dx() + hitV[hit] * frame.right().dx();
+    }
+
+    double worldY(int hit) {
+        return originY + hitU[hit] * frame.dy() + hitV[hit] * frame.right().dy();
+    }
+
+    double originX() {
+        return originX;
+    }
+
+    double originY() {
+        return originY;
     }
 
     boolean isParkedCar(int hit) {

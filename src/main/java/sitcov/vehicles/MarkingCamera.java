@@ -33,6 +33,13 @@ final class MarkingCamera {
     private final double[] stripLo = new double[MAX_CANDIDATES];
     private final double[] stripHi = new double[MAX_CANDIDATES];
     private final double[] seen = new double[MAX_RAYS];
+    /** Where this look's rays met a marking, and where the look the car kept did (for viewers; swapped, never copied). */
+    private double[] hitX = new double[MAX_RAYS];
+    private double[] hitY = new double[MAX_RAYS];
+    private int hitCount;
+    private double[] keptX = new double[MAX_RAYS];
+    private double[] keptY = new double[MAX_RAYS];
+    private int kept;
     private final RoadReach roadReach;
 
     MarkingCamera(RoadNetwork network) {
@@ -43,6 +50,7 @@ final class MarkingCamera {
     /** Looks from ({@code x}, {@code y}) around {@code lane} and estimates where the lane is. */
     LaneEstimate look(double x, double y, Compass lane, CameraSettings settings) {
         double limit = settings.limit();
+        hitCount = 0;
         roadReach.gather(x, y, limit);
         Compass right = lane.right();
         int n = nearbyStrips(x, y, lane, limit, MarkingKind.EDGE);
@@ -68,6 +76,29 @@ final class MarkingCamera {
         }
         return new LaneEstimate(!Double.isNaN(edge), Double.isNaN(edge) ? 0 : edge,
                 !Double.isNaN(centre), Double.isNaN(centre) ? 0 : centre);
+    }
+
+    /** Keeps the last look's marking hits as the ones a viewer is shown (the car's own look, not a comparison's). */
+    void keepHits() {
+        double[] x = keptX;
+        double[] y = keptY;
+        keptX = hitX;
+        keptY = hitY;
+        hitX = x;
+        hitY = y;
+        kept = hitCount;
+    }
+
+    int keptHits() {
+        return kept;
+    }
+
+    double keptX(int hit) {
+        return keptX[hit];
+    }
+
+    double keptY(int hit) {
+        return keptY[hit];
     }
 
     /** The mean lateral offset of the hits on the line nearest the car (one side's hits are in {@code seen}); NaN if none. */
@@ -109,6 +140,11 @@ final class MarkingCamera {
         // the ray stops where it leaves the road; only a ray that hit something needs to know where
         if (Double.isNaN(best) || !roadReach.reaches(x, y, dx, dy, best)) {
             return Double.NaN;
+        }
+        if (hitCount < MAX_RAYS) {
+            hitX[hitCount] = x + best * dx;
+            hitY[hitCount] = y + best * dy;
+            hitCount++;
         }
         return best * (dx * right.dx() + dy * right.dy());
     }

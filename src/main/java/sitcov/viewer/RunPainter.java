@@ -22,9 +22,10 @@ import sitcov.vehicles.Vehicle;
 import sitcov.world.WorldMap;
 
 /**
- * Paints one live run as it stands: the map (drawn once), what the car's sensors cover (the camera's
- * 90° fan, 10 m, and the LIDAR's half disc, 25 m), every vehicle, each accident where it happened,
- * and a header with the car's state. It only reads the run: the model never knows it is watched.
+ * Paints one live run as it stands: the map (drawn once), the car's sensors (the camera's 90° fan to
+ * 10 m with the samples where its rays met markings; the LIDAR's half disc to 25 m with the rays of
+ * its last sweep that hit something), every vehicle, each accident where it happened, and a header
+ * with the car's state. It only reads the run: the model never knows it is watched.
  */
 public final class RunPainter {
     static final int HEADER = 58;
@@ -33,6 +34,7 @@ public final class RunPainter {
     static final Color ACCIDENT = new Color(0xD7263D);
     private static final Color CAMERA = new Color(255, 230, 80, 70);
     private static final Color LIDAR = new Color(255, 255, 255, 150);
+    static final Color CAMERA_HIT = new Color(0xFFD400);
     private static final double CAMERA_RANGE = 10;
     private static final double LIDAR_RANGE = 25;
 
@@ -102,12 +104,29 @@ public final class RunPainter {
                 + accidents.get(accidents.size() - 1).tick(), 8, 52);
     }
 
+    /**
+     * The camera's reach (shaded fan) and the samples where its rays met a marking this tick (yellow
+     * dots); the LIDAR's reach (outlined half disc) and the rays of its last sweep that hit something.
+     */
     private void sensors(Graphics2D g, AutonomousCar car) {
         g.setColor(CAMERA);
         g.fill(fan(car.x(), car.y(), car.heading(), 45, CAMERA_RANGE));
         g.setColor(LIDAR);
         g.setStroke(new BasicStroke(1.5f / scale));
         g.draw(fan(car.x(), car.y(), car.heading(), 90, LIDAR_RANGE));
+        g.setStroke(new BasicStroke(0.8f / scale));
+        for (int h = 0; h < car.lidarHits(); h++) {
+            g.draw(new java.awt.geom.Line2D.Double(car.lidarOriginX(), car.lidarOriginY(), car.lidarHitX(h), car.lidarHitY(h)));
+        }
+        double r = 1.5 / scale;
+        for (int h = 0; h < car.cameraHits(); h++) {
+            Ellipse2D dot = new Ellipse2D.Double(car.cameraHitX(h) - r, car.cameraHitY(h) - r, 2 * r, 2 * r);
+            g.setColor(CAMERA_HIT);
+            g.fill(dot);
+            g.setColor(Color.BLACK);
+            g.setStroke(new BasicStroke(0.5f / scale));
+            g.draw(dot);
+        }
     }
 
     /** A circular sector from (x, y) spanning {@code half} degrees either side of {@code bearing}. */

@@ -41,6 +41,15 @@ class RunPainterTest {
         }
         BufferedImage image = paint(painter);
         assertEquals(RunPainter.CAR.getRGB() & 0xFFFFFF, carPixel(painter, image), "the car's colour at its centre");
+        AutonomousCar car = painter.run().scene().autonomousCar();
+        assertTrue(car.cameraHits() > 0, "the camera saw markings");
+        int yellow = 0;
+        for (int h = 0; h < car.cameraHits(); h++) {
+            int x = (int) Math.round(car.cameraHitX(h) * 4);
+            int y = RunPainter.HEADER + (int) Math.round(car.cameraHitY(h) * 4);
+            yellow += (image.getRGB(x, y) & 0xFFFFFF) == (RunPainter.CAMERA_HIT.getRGB() & 0xFFFFFF) ? 1 : 0;
+        }
+        assertTrue(yellow > 0, "the camera's hits are drawn where they are (a car may cover some)");
         var before = painter.run().scene().autonomousCar().footprint().centre();
         for (int i = 0; i < 40; i++) {
             painter.run().step();

@@ -23,8 +23,11 @@ package sitcov.stats;
  * the dropped zeros carry no sign.
  */
 public final class WilcoxonSignedRank {
-    /** Largest number of non-zero differences for which the exact distribution is used. */
-    public static final int EXACT_MAX = 25;
+    /**
+     * Largest number of non-zero differences for which the exact distribution is used: R's rule (exact
+     * below 50), so an experiment of 30 paired replications gets exact p-values where nothing ties.
+     */
+    public static final int EXACT_MAX = 49;
 
     private WilcoxonSignedRank() {
     }
@@ -95,7 +98,7 @@ public final class WilcoxonSignedRank {
     /** Two-sided exact p of W⁺ = w among n untied non-zero differences. */
     static double exactP(long w, int n) {
         int max = n * (n + 1) / 2;
-        long[] c = new long[max + 1]; // c[s]: sign patterns with W+ = s; at most 2^25, exact in a long
+        long[] c = new long[max + 1]; // c[s]: sign patterns with W+ = s; at most 2^49, exact in a long and a double
         c[0] = 1;
         for (int i = 1; i <= n; i++) {
             for (int s = max; s >= i; s--) {

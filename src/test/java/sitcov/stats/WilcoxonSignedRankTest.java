@@ -48,19 +48,32 @@ class WilcoxonSignedRankTest {
     }
 
     @Test
-    void moreThanTwentyfiveDifferencesUseTheNormalApproximation() {
-        // 26 untied positive differences 1..26: W+ = 351 = n(n+1)/2; by hand
-        // z = (351 - 175.5 - 0.5) / sqrt(26 * 27 * 53 / 24) = 4.4446, p = 2 * Phi(-4.4446) = 8.8037e-6
-        // (cross-checked with scipy.stats.wilcoxon(method="approx", correction=True)).
-        double[] d = new double[26];
+    void thirtyUntiedDifferencesOfOneSignGetTheExactP() {
+        // all 30 positive: only the all-positive and the all-negative pattern are as extreme, p = 2 / 2^30
+        double[] d = new double[30];
+        for (int i = 0; i < d.length; i++) {
+            d[i] = i + 1;
+        }
+        WilcoxonSignedRank.Result r = WilcoxonSignedRank.test(d);
+        assertTrue(r.exact());
+        assertEquals(465, r.wPlus(), 0);
+        assertEquals(2 / Math.pow(2, 30), r.p(), 1e-24);
+    }
+
+    @Test
+    void fiftyDifferencesUseTheNormalApproximation() {
+        // 50 untied positive differences 1..50 (R is exact only below 50): W+ = 1275 = n(n+1)/2; by hand
+        // z = (1275 - 637.5 - 0.5) / sqrt(50 * 51 * 101 / 24) = 637 / 103.5917 = 6.1491
+        double[] d = new double[50];
         for (int i = 0; i < d.length; i++) {
             d[i] = i + 1;
         }
         WilcoxonSignedRank.Result r = WilcoxonSignedRank.test(d);
         assertFalse(r.exact());
-        assertEquals(351, r.wPlus(), 0);
-        assertEquals(175 / Math.sqrt(26 * 27 * 53 / 24.0), r.z(), 1e-12);
-        assertEquals(8.803669768907956e-06, r.p(), 1e-15);
+        assertEquals(1275, r.wPlus(), 0);
+        assertEquals(637 / Math.sqrt(50 * 51 * 101 / 24.0), r.z(), 1e-12);
+        assertEquals(2 * Normal.cdf(-637 / Math.sqrt(50 * 51 * 101 / 24.0)), r.p(), 1e-20);
+        assertTrue(r.p() < 1e-9);
     }
 
     @Test

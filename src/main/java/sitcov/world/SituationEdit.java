@@ -1,0 +1,144 @@
+package sitcov.world;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import sitcov.geom.Vec2;
+
+/**
+ * One change to a situation that a search makes (issue 16): the Target or the car's start moved along
+ * its road, a parked car added, moved along its road or removed. An edit applies to a map and gives
+ * the edited map only if it keeps every rule of the world ({@link Invariants}); the map it gives is a
+ * value like any other, written to a situation file to be replayed. Its {@link #text} names it, so
+ * parent + edits is an identity.
+ */
+public sealed interface SituationEdit {
+    /** The edited map, or empty when the edit does not apply or the result breaks a rule of the world. */
+    default Optional<WorldMap> apply(WorldMap map) {
+        return edit(map).filter(m -> Invariants.violations(m).isEmpty());
+    }
+
+    /** The edit made, before the world's rules are checked. */
+    Optional<WorldMap> edit(WorldMap map);
+
+    /** A short name, e.g. {@code move-target:+5.00}. */
+    String text();
+
+    /** The Target moved {@code by} metres along its road (positive: towards the road's end). */
+    record MoveTarget(double by) implements SituationEdit {
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            Layout l = map.layout();
+            return l.target().flatMap(t -> road(l, t.roadId()).map(road -> with(map, new Layout(l.seed(), l.roads(),
+                    l.junctions(), l.parkedCars(), Optional.of(new Target(slide(road, t.position(), by), t.roadId())),
+                    l.carStart(), l.junctionAttempts(), l.parkedCarsRequested(), l.omissions()))));
+        }
+
+        @Override
+        public String text() {
+            return String.format(Locale.ROOT, "move-target:%+.2f", by);
+        }
+    }
+
+    /** The car's start moved {@code by} metres along its road, its heading kept. */
+    record MoveStart(double by) implements SituationEdit {
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            Layout l = map.layout();
+            return l.carStart().flatMap(s -> roadAt(l, s.position()).map(road -> with(map, new Layout(l.seed(), l.roads(),
+                    l.junctions(), l.parkedCars(), l.target(), Optional.of(new StartPose(slide(road, s.position(), by),
+                    s.heading())), l.junctionAttempts(), l.parkedCarsRequested(), l.omissions()))));
+        }
+
+        @Override
+        public String text() {
+            return String.format(Locale.ROOT, "move-start:%+.2f", by);
+        }
+    }
+
+    /** Parked car {@code id} moved {@code by} metres along its road, at the same kerb. */
+    record MoveParkedCar(int id, double by) implements SituationEdit {
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            Layout l = map.layout();
+            List<ParkedCar> cars = new ArrayList<>(l.parkedCars());
+            for (int i = 0; i < cars.size(); i++) {
+                ParkedCar c = cars.get(i);
+                if (c.id() == id) {
+                    Optional<Road> road = road(l, c.roadId());
+                    if (road.isEmpty()) {
+                        return Optional.empty();
+                    }
+                    cars.set(i, new ParkedCar(c.id(), c.roadId(), slide(road.get(), c.centre(), by), c.axis()));
+                    return Optional.of(with(map, parked(l, cars)));
+                }
+            }
+            return Optional.empty();
+        }
+
+        @Override
+        public String text() {
+            return String.format(Locale.ROOT, "move-parked-car:%d:%+.2f", id, by);
+        }
+    }
+
+    /** Parked car {@code id} taken away. */
+    record RemoveParkedCar(int id) implements SituationEdit {
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            Layout l = map.layout();
+            List<ParkedCar> cars = l.parkedCars().stream().filter(c -> c.id() != id).toList();
+            return cars.size() == l.parkedCars().size() ? Optional.empty() : Optional.of(with(map, parked(l, cars)));
+        }
+
+        @Override
+        public String text() {
+            return "remove-parked-car:" + id;
+        }
+    }
+
+    /** A parked car added at the kerb nearest ({@code x}, {@code y}) on the road there, with the next free id. */
+    record AddParkedCar(double x, double y) implements SituationEdit {
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            Layout l = map.layout();
+            Road road = RoadNetwork.of(l).roadAt(x, y);
+            if (road == null) {
+                return Optional.empty();
+            }
+            int id = l.parkedCars().stream().mapToInt(ParkedCar::id).max().orElse(-1) + 1;
+            List<ParkedCar> cars = new ArrayList<>(l.parkedCars());
+            cars.add(new ParkedCar(id, road.id(), RoadNetwork.kerbsidePosition(road, x, y), road.axis()));
+            return Optional.of(with(map, parked(l, cars)));
+        }
+
+        @Override
+        public String text() {
+            return String.format(Locale.ROOT, "add-parked-car:%.2f:%.2f", x, y);
+        }
+    }
+
+    private static Optional<Road> road(Layout layout, int id) {
+        return layout.roads().stream().filter(r -> r.id() == id).findFirst();
+    }
+
+    private static Optional<Road> roadAt(Layout layout, Vec2 p) {
+        return Optional.ofNullable(RoadNetwork.of(layout).roadAt(p.x(), p.y()));
+    }
+
+    /** The point {@code by} metres further along {@code road}, at the same distance across it. */
+    private static Vec2 slide(Road road, Vec2 p, double by) {
+        Vec2 moved = road.point(road.along(p.x(), p.y()) + by, road.across(p.x(), p.y()));
+        return new Vec2(Dimensions.rounded(moved.x()), Dimensions.rounded(moved.y()));
+    }
+
+    private static Layout parked(Layout l, List<ParkedCar> cars) {
+        return new Layout(l.seed(), l.roads(), l.junctions(), cars, l.target(), l.carStart(), l.junctionAttempts(),
+                l.parkedCarsRequested(), l.omissions());
+    }
+
+    private static WorldMap with(WorldMap map, Layout layout) {
+        return new WorldMap(layout, map.movingCars(), map.movingCarsRequested(), map.movingCarOmissions());
+    }
+}

@@ -24,6 +24,8 @@ public final class DriverSession {
     private final int driverIndex;
     private final Budget budget;
     private final RandomGenerator stream;
+    private final String streamLabel;
+    private RandomGenerator choices;
     private final GridDefinition grid;
     private final CoverageGrid cells;
     private final List<Journal.Entry> replay;
@@ -33,6 +35,8 @@ public final class DriverSession {
     /** Wall time charged for maps another driver of the replication judged: as if this driver had run them. */
     private long creditedNanos;
     private int drawn;
+    /** Candidates read from the replication's stream: a candidate's index is its place there. */
+    private int streamed;
     private int mapsRun;
     private long ticks;
     private StopReason stop;
@@ -50,6 +54,7 @@ public final class DriverSession {
         this.driverIndex = driverIndex;
         this.budget = budget;
         this.stream = SeedPlan.candidates(host.config().masterSeed(), replication.streamLabel());
+        this.streamLabel = replication.streamLabel();
         this.grid = host.config().grid();
         this.cells = new CoverageGrid(grid);
         this.replay = journal.maps(replication.index(), driver);
@@ -90,7 +95,43 @@ public final class DriverSession {
         }
         Layout layout = MapGenerator.layout(stream.nextLong());
         double[] values = grid.values(layout);
-        return new Candidate(drawn++, layout, values, grid.cellOf(values));
+        drawn++;
+        return new Candidate(streamed++, layout, values, grid.cellOf(values));
+    }
+
+    /**
+     * Counts a situation the driver built (say, an edit of one it holds) as a candidate drawn: a search
+     * pays per candidate like a filter does, and stops at the same candidate limit.
+     */
+    public void chargeBuilt() {
+        host.checkHalt();
+        if (drawn >= budget.candidateLimit()) {
+            throw new IllegalStateException("driver " + driver + " built past its limit of " + budget.candidateLimit()
+                    + " candidates; check budgetLeft() before each");
+        }
+        drawn++;
+    }
+
+    /** The cell a layout falls in ({@link sitcov.coverage.Bins#INVALID} outside the grid). */
+    public int cellOf(Layout layout) {
+        return grid.cellOf(grid.values(layout));
+    }
+
+    public GridDefinition grid() {
+        return grid;
+    }
+
+    /** The replication this session runs (names of built situations carry it, so they are unique). */
+    public int replication() {
+        return replication;
+    }
+
+    /** The stream of this driver's own choices in this replication (which situation to edit, how). */
+    public RandomGenerator choices() {
+        if (choices == null) {
+            choices = SeedPlan.choices(host.config().masterSeed(), streamLabel, driver);
+        }
+        return choices;
     }
 
     /** Whether a map this driver ran already fills {@code cell}. */

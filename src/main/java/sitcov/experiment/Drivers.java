@@ -20,6 +20,7 @@ public final class Drivers {
         m.put("coverage-filter", CoverageFilterDriver::new);
         m.put("random", RandomDriver::new);
         m.put("every-other", EveryOtherDriver::new);
+        m.put("coverage-search", CoverageSearchDriver::new);
         return new Drivers(m);
     }
 

@@ -16,6 +16,8 @@ import sitcov.engine.RandomStreams;
  *   {@code mix(M, "internal-seed:situation:" + name)};</li>
  * <li>the map itself, and everything random in a run, come from the external and internal seeds'
  *   own named streams ({@link sitcov.world.MapGenerator}, {@link sitcov.engine.SimState});</li>
+ * <li>a driver's own choices (a search's: which situation to edit, how) come from stream
+ *   {@code choices:DRIVER} of {@code M} derived by the replication's label;</li>
  * <li>the analysis of the results (bootstrap resamples, permutations) draws from stream
  *   {@code purpose} of {@code M} derived by {@code analysis}, so its intervals and p-values
  *   are reproduced with the results.</li>
@@ -41,6 +43,11 @@ public final class SeedPlan {
     /** The candidate stream of replication {@code replication} of a comparison. */
     public static RandomGenerator candidates(long masterSeed, int replication) {
         return candidates(masterSeed, replicationLabel(replication));
+    }
+
+    /** The stream of a driver's own choices in the replication (or map set) labelled {@code label}. */
+    public static RandomGenerator choices(long masterSeed, String label, String driver) {
+        return new RandomStreams(masterSeed).derive(label).stream("choices:" + driver);
     }
 
     /** The randomness of one analysis of the results, e.g. {@code "bootstrap"} or {@code "cell-permutations"}. */

@@ -1,0 +1,48 @@
+package sitcov.experiment;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.random.RandomGenerator;
+import org.junit.jupiter.api.Test;
+import sitcov.coverage.GridDefinition;
+import sitcov.faults.FaultSet;
+
+class CoverageSearchDriverTest {
+    // the search alone, 150 candidates: enough for its first elites to be edited into new cells
+    private static final ExperimentConfig SEARCH = new ExperimentConfig("search", 42, 150, 1, FaultSet.parse("19"),
+            BudgetKind.TICKS, GridDefinition.paper(), List.of("coverage-search"), List.of(), 150, FaultyRuns.UNTIL_VERDICT);
+
+    @Test
+    void theSearchRunsEditedSituationsOnlyInCellsNotYetCoveredAndDrawsRandomOnesInStreamOrder() {
+        List<ReplicationResult> results = ResultsCollector.run(SEARCH, Drivers.standard(), 1);
+        DriverRun run = results.get(0).of("coverage-search");
+        Set<Integer> cells = new HashSet<>();
+        int edited = 0;
+        RandomGenerator stream = SeedPlan.candidates(SEARCH.masterSeed(), 0);
+        long[] sequence = new long[SEARCH.candidateLimit()];
+        for (int i = 0; i < sequence.length; i++) {
+            sequence[i] = stream.nextLong();
+        }
+        for (MapRun m : run.maps()) {
+            assertTrue(cells.add(m.cell()), "cell " + m.cell() + " run twice (master seed " + SEARCH.masterSeed() + ")");
+            if (m.map() instanceof MapId.Situation s) {
+                edited++;
+                assertTrue(s.name().startsWith("search-r0-"), s.name());
+                assertEquals(-1, m.candidate());
+            } else {
+                assertEquals(sequence[m.candidate()], m.externalSeed(), "a random candidate keeps its place in the stream");
+            }
+        }
+        assertTrue(edited > 0, "no edited situation reached a new cell in " + run.spend().candidates() + " candidates");
+        assertEquals(150, run.spend().candidates(), "every edit tried is charged as a candidate");
+    }
+
+    @Test
+    void theSearchIsTheSameOnEveryRun() {
+        assertEquals(ResultsCollector.run(SEARCH, Drivers.standard(), 1), ResultsCollector.run(SEARCH, Drivers.standard(), 2));
+    }
+}

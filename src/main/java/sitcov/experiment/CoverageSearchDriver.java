@@ -6,6 +6,8 @@ import java.util.Optional;
 import java.util.TreeMap;
 import java.util.random.RandomGenerator;
 import sitcov.coverage.Bins;
+import sitcov.coverage.Criterion;
+import sitcov.coverage.GridDefinition;
 import sitcov.world.Layout;
 import sitcov.world.MapGenerator;
 import sitcov.world.ParkedCar;
@@ -15,16 +17,15 @@ import sitcov.world.WorldMap;
 /**
  * Coverage search, MAP-Elites style (Mouret &amp; Clune 2015; DeepHyperion's illumination): keeps one
  * situation per covered cell (an elite), and instead of waiting for a random candidate to land in an
- * empty cell, edits an elite next to an empty cell — moves its Target or start, adds, moves or removes
- * a parked car — and runs the edit if it lands in a cell not yet covered. One candidate in
+ * empty cell, edits an elite next to an empty cell, aiming at it: a parked car added at the distance
+ * from the Target the empty cell asks for (or the nearest removed), the start or the Target moved
+ * along its road; it runs the edit if it lands in a cell not yet covered. One candidate in
  * {@link #EXPLORE_EVERY} is still drawn at random, so the search keeps finding new regions of the grid
  * (and the first elites come from there). Every edit tried is charged as a candidate.
  */
 final class CoverageSearchDriver implements Driver {
     /** One random candidate in this many, the rest edits. */
-    static final int EXPLORE_EVERY = 4;
-    /** Edits tried on one elite per candidate. */
-    private static final int MAX_EDITS = 3;
+    static final int EXPLORE_EVERY = 2;
 
     private final TreeMap<Integer, WorldMap> elites = new TreeMap<>();
     private int built;
@@ -51,49 +52,86 @@ final class CoverageSearchDriver implements Driver {
     }
 
     private void search(DriverSession session, RandomGenerator choose) {
-        WorldMap parent = pickElite(session, choose);
+        List<int[]> frontier = frontier(session);
         session.chargeBuilt();
-        WorldMap child = parent;
-        int edits = 1 + choose.nextInt(MAX_EDITS);
-        for (int i = 0; i < edits; i++) {
-            Optional<WorldMap> next = randomEdit(child.layout(), choose).apply(child);
-            if (next.isEmpty()) {
-                return;
-            }
-            child = next.get();
+        WorldMap parent;
+        SituationEdit edit;
+        if (frontier.isEmpty()) {
+            List<Integer> all = new ArrayList<>(elites.keySet());
+            parent = elites.get(all.get(choose.nextInt(all.size())));
+            edit = randomEdit(parent.layout(), choose);
+        } else {
+            // an elite, a criterion in which the next bin is empty, and which way: aim the edit there
+            int[] aim = frontier.get(choose.nextInt(frontier.size()));
+            parent = elites.get(aim[0]);
+            edit = aimedEdit(parent.layout(), session.grid(), aim[1], aim[2], aim[3], choose);
         }
-        int cell = session.cellOf(child.layout());
-        if (cell != Bins.INVALID && child.layout().isRunnable() && !session.covers(cell)) {
-            session.run("search-r" + session.replication() + "-" + built++, child);
-            elites.put(cell, child);
+        Optional<WorldMap> child = edit.apply(parent);
+        if (child.isEmpty()) {
+            return;
+        }
+        int cell = session.cellOf(child.get().layout());
+        if (cell != Bins.INVALID && child.get().layout().isRunnable() && !session.covers(cell)) {
+            session.run("search-r" + session.replication() + "-" + built++, child.get());
+            elites.put(cell, child.get());
         }
     }
 
-    /** An elite with an empty cell next to it, when there is one; any elite otherwise. */
-    private WorldMap pickElite(DriverSession session, RandomGenerator choose) {
-        List<Integer> frontier = new ArrayList<>();
-        for (int cell : elites.keySet()) {
-            if (hasEmptyNeighbour(session, cell)) {
-                frontier.add(cell);
-            }
-        }
-        List<Integer> from = frontier.isEmpty() ? new ArrayList<>(elites.keySet()) : frontier;
-        return elites.get(from.get(choose.nextInt(from.size())));
-    }
-
-    /** Whether a cell one bin away in one criterion is still empty (cells number their bins mixed-radix, first slowest). */
-    private static boolean hasEmptyNeighbour(DriverSession session, int cell) {
+    /**
+     * Every (elite cell, criterion, its bin there, step ±1) whose neighbouring cell is still empty;
+     * cells number their bins mixed-radix, the first criterion slowest.
+     */
+    private List<int[]> frontier(DriverSession session) {
         List<Bins> bins = session.grid().bins();
-        int stride = 1;
-        for (int c = bins.size() - 1; c >= 0; c--) {
-            int count = bins.get(c).count();
-            int digit = (cell / stride) % count;
-            if ((digit > 0 && !session.covers(cell - stride)) || (digit < count - 1 && !session.covers(cell + stride))) {
-                return true;
+        List<int[]> aims = new ArrayList<>();
+        for (int cell : elites.keySet()) {
+            int stride = 1;
+            for (int c = bins.size() - 1; c >= 0; c--) {
+                int count = bins.get(c).count();
+                int digit = (cell / stride) % count;
+                if (digit > 0 && !session.covers(cell - stride)) {
+                    aims.add(new int[] {cell, c, digit, -1});
+                }
+                if (digit < count - 1 && !session.covers(cell + stride)) {
+                    aims.add(new int[] {cell, c, digit, 1});
+                }
+                stride *= count;
             }
-            stride *= count;
         }
-        return false;
+        return aims;
+    }
+
+    /**
+     * An edit meant to move criterion {@code c} from bin {@code digit} one bin up or down: the nearest
+     * parked car nearer to or farther from the Target, the start or the Target moved along its road.
+     * Which way along a road raises a distance is not known beforehand: a wrong guess lands elsewhere,
+     * maybe in another empty cell, and costs one candidate.
+     */
+    private static SituationEdit aimedEdit(Layout layout, GridDefinition grid, int c, int digit, int step,
+                                           RandomGenerator choose) {
+        Criterion criterion = grid.criteria().get(c);
+        Bins bins = grid.bins().get(c);
+        double lo = bins.lower(digit + step);
+        double hi = Math.min(bins.upper(digit + step), lo + 40);
+        double wanted = lo + choose.nextDouble() * (hi - lo);
+        double sign = choose.nextBoolean() ? 1 : -1;
+        var target = layout.target().map(t -> t.position()).orElse(new sitcov.geom.Vec2(100, 50));
+        return switch (criterion) {
+            case TARGET_TO_OBSTACLE -> {
+                ParkedCar nearest = layout.parkedCars().stream().min(java.util.Comparator.comparingDouble(
+                        p -> p.centre().distanceTo(target.x(), target.y()))).orElse(null);
+                if (step > 0 && nearest != null && choose.nextBoolean()) {
+                    yield new SituationEdit.RemoveParkedCar(nearest.id());
+                }
+                // a parked car the wanted distance from the Target, along the road's axis either way
+                boolean alongX = layout.roads().stream().filter(r -> r.id() == layout.target().get().roadId())
+                        .findFirst().map(r -> !r.isNorthSouth()).orElse(true);
+                yield alongX ? new SituationEdit.AddParkedCar(target.x() + sign * wanted, target.y())
+                        : new SituationEdit.AddParkedCar(target.x(), target.y() + sign * wanted);
+            }
+            case START_TO_TARGET -> new SituationEdit.MoveStart(sign * (10 + choose.nextDouble() * 50));
+            case PREVIOUS_JUNCTION_TO_TARGET -> new SituationEdit.MoveTarget(sign * (2 + choose.nextDouble() * 18));
+        };
     }
 
     private static SituationEdit randomEdit(Layout layout, RandomGenerator choose) {

@@ -21,7 +21,8 @@ import sitcov.world.WorldMap;
  * from the Target the empty cell asks for (or the nearest removed), the start or the Target moved
  * along its road; it runs the edit if it lands in a cell not yet covered. One candidate in
  * {@link #EXPLORE_EVERY} is still drawn at random, so the search keeps finding new regions of the grid
- * (and the first elites come from there). Every edit tried is charged as a candidate.
+ * (and the first elites come from there). Every edit tried is paid for with a candidate of the stream,
+ * set aside, so the search is charged per candidate like the filter and its curves share their axis.
  */
 final class CoverageSearchDriver implements Driver {
     /** One random candidate in this many, the rest edits. */
@@ -53,7 +54,8 @@ final class CoverageSearchDriver implements Driver {
 
     private void search(DriverSession session, RandomGenerator choose) {
         List<int[]> frontier = frontier(session);
-        session.chargeBuilt();
+        // the edit is paid for with the next candidate of the stream, set aside
+        Candidate spent = session.nextCandidate();
         WorldMap parent;
         SituationEdit edit;
         if (frontier.isEmpty()) {
@@ -72,7 +74,7 @@ final class CoverageSearchDriver implements Driver {
         }
         int cell = session.cellOf(child.get().layout());
         if (cell != Bins.INVALID && child.get().layout().isRunnable() && !session.covers(cell)) {
-            session.run("search-r" + session.replication() + "-" + built++, child.get());
+            session.run("search-r" + session.replication() + "-" + built++, child.get(), spent);
             elites.put(cell, child.get());
         }
     }

@@ -35,8 +35,6 @@ public final class DriverSession {
     /** Wall time charged for maps another driver of the replication judged: as if this driver had run them. */
     private long creditedNanos;
     private int drawn;
-    /** Candidates read from the replication's stream: a candidate's index is its place there. */
-    private int streamed;
     private int mapsRun;
     private long ticks;
     private StopReason stop;
@@ -95,21 +93,7 @@ public final class DriverSession {
         }
         Layout layout = MapGenerator.layout(stream.nextLong());
         double[] values = grid.values(layout);
-        drawn++;
-        return new Candidate(streamed++, layout, values, grid.cellOf(values));
-    }
-
-    /**
-     * Counts a situation the driver built (say, an edit of one it holds) as a candidate drawn: a search
-     * pays per candidate like a filter does, and stops at the same candidate limit.
-     */
-    public void chargeBuilt() {
-        host.checkHalt();
-        if (drawn >= budget.candidateLimit()) {
-            throw new IllegalStateException("driver " + driver + " built past its limit of " + budget.candidateLimit()
-                    + " candidates; check budgetLeft() before each");
-        }
-        drawn++;
+        return new Candidate(drawn++, layout, values, grid.cellOf(values));
     }
 
     /** The cell a layout falls in ({@link sitcov.coverage.Bins#INVALID} outside the grid). */
@@ -157,6 +141,16 @@ public final class DriverSession {
     public MapRun run(String name, WorldMap situation) {
         double[] values = grid.values(situation.layout());
         return run(new MapId.Situation(name), -1, values, grid.cellOf(values), () -> situation, Optional.of(situation));
+    }
+
+    /**
+     * Runs a situation the driver built in place of candidate {@code spent} (drawn and set aside, so a
+     * search pays per candidate like a filter and every map's candidate is its place in the stream).
+     */
+    public MapRun run(String name, WorldMap situation, Candidate spent) {
+        double[] values = grid.values(situation.layout());
+        return run(new MapId.Situation(name), spent.index(), values, grid.cellOf(values), () -> situation,
+                Optional.of(situation));
     }
 
     private MapRun run(MapId id, int candidate, double[] criteria, int cell, Supplier<WorldMap> map,

@@ -4,8 +4,8 @@ import java.util.List;
 
 /**
  * One map a driver ran in one replication, as the results folder keeps it: which driver, its
- * {@code mapIndex}-th map, drawn as candidate {@code candidate} of the replication's stream (-1 for
- * a built situation), the map, both seeds, its cell and criteria, the fault-free run and every fault's outcome.
+ * {@code mapIndex}-th map, drawn as candidate {@code candidate} of the replication's stream (for a
+ * situation a driver built, the candidate it was built in place of, or -1), the map, both seeds, its cell and criteria, the fault-free run and every fault's outcome.
  */
 public record MapRun(int replication, String driver, int mapIndex, int candidate, MapId map, long externalSeed,
                      long internalSeed, int cell, List<Double> criteria, RunSummary faultFree, List<FaultOutcome> faults) {

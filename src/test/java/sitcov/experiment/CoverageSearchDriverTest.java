@@ -32,13 +32,15 @@ class CoverageSearchDriverTest {
             if (m.map() instanceof MapId.Situation s) {
                 edited++;
                 assertTrue(s.name().startsWith("search-r0-"), s.name());
-                assertEquals(-1, m.candidate());
+                assertTrue(m.candidate() >= 0, "built in place of a candidate of the stream");
             } else {
                 assertEquals(sequence[m.candidate()], m.externalSeed(), "a random candidate keeps its place in the stream");
             }
         }
         assertTrue(edited > 0, "no edited situation reached a new cell in " + run.spend().candidates() + " candidates");
-        assertEquals(150, run.spend().candidates(), "every edit tried is charged as a candidate");
+        assertEquals(150, run.spend().candidates(), "every edit tried is paid for with a candidate");
+        List<Integer> order = run.maps().stream().map(MapRun::candidate).toList();
+        assertEquals(order.stream().sorted().toList(), order, "maps run in the order of the candidates they used");
     }
 
     @Test

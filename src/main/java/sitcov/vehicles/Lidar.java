@@ -28,6 +28,8 @@ final class Lidar {
     private final int[] firstRay = new int[MAX_OBJECTS];
     private final int[] lastRay = new int[MAX_OBJECTS];
     private final RoadReach roadReach;
+    /** Four lanes, and the heading fault 18 sweeps along. */
+    private final RayFan.Cache fans = new RayFan.Cache(6);
 
     private final double[] hitU = new double[RAYS];
     private final double[] hitV = new double[RAYS];
@@ -88,10 +90,10 @@ final class Lidar {
         }
         Compass right = lane.right();
         Compass ahead = lane;
+        RayFan fan = fans.fan(RayFan.Form.FROM_THE_RIGHT, centreBearing, RAYS, ARC / 2, ANGULAR_STEP);
         for (int ray = 0; ray < RAYS; ray++) {
-            double r = Math.toRadians(centreBearing - ARC / 2 + ray * ANGULAR_STEP);
-            double dx = Math.sin(r);
-            double dy = Math.cos(r);
+            double dx = fan.dx(ray);
+            double dy = fan.dy(ray);
             double best = Double.NaN;
             boolean parked = false;
             for (int k = 0; k < n; k++) {

@@ -41,6 +41,8 @@ final class MarkingCamera {
     private double[] keptY = new double[MAX_RAYS];
     private int kept;
     private final RoadReach roadReach;
+    /** Four lanes, with the faulty and the standard settings. */
+    private final RayFan.Cache fans = new RayFan.Cache(16);
 
     MarkingCamera(RoadNetwork network) {
         this.network = network;
@@ -55,8 +57,9 @@ final class MarkingCamera {
         Compass right = lane.right();
         int n = nearbyStrips(x, y, lane, limit, MarkingKind.EDGE);
         int hits = 0;
-        for (double i = settings.leftArc(); i >= -1e-9 && hits < MAX_RAYS; i -= settings.angularStep()) {
-            double v = lateralOfHit(x, y, lane.bearing(), i, right, n, settings, limit);
+        RayFan fan = fans.fan(RayFan.Form.STEPPING_RIGHT, lane.bearing(), settings.leftArc(), 0, settings.angularStep());
+        for (int ray = 0; ray < fan.size() && hits < MAX_RAYS; ray++) {
+            double v = lateralOfHit(x, y, fan, ray, right, n, settings, limit);
             if (!Double.isNaN(v) && v < 0 && v > -FARTHEST_LINE) {
                 seen[hits++] = v;
             }
@@ -64,8 +67,9 @@ final class MarkingCamera {
         double edge = nearestLine(hits);
         n = nearbyStrips(x, y, lane, limit, MarkingKind.CENTRE);
         hits = 0;
-        for (double i = 0; i >= -settings.rightArc() - 1e-9 && hits < MAX_RAYS; i -= settings.angularStep()) {
-            double v = lateralOfHit(x, y, lane.bearing(), i, right, n, settings, limit);
+        fan = fans.fan(RayFan.Form.STEPPING_RIGHT, lane.bearing(), 0, -settings.rightArc(), settings.angularStep());
+        for (int ray = 0; ray < fan.size() && hits < MAX_RAYS; ray++) {
+            double v = lateralOfHit(x, y, fan, ray, right, n, settings, limit);
             if (!Double.isNaN(v) && v > 0 && v < FARTHEST_LINE) {
                 seen[hits++] = v;
             }
@@ -122,11 +126,11 @@ final class MarkingCamera {
     }
 
     /** The lateral offset (right positive) of the ray's first marking hit, or NaN. */
-    private double lateralOfHit(double x, double y, double laneBearing, double offset, Compass right, int nStrips,
+    private double lateralOfHit(double x, double y, RayFan fan, int ray, Compass right, int nStrips,
                                 CameraSettings settings, double limit) {
-        double r = Math.toRadians(laneBearing + offset);
-        double dx = Math.sin(r);
-        double dy = Math.cos(r);
+        double offset = fan.offset(ray);
+        double dx = fan.dx(ray);
+        double dy = fan.dy(ray);
         double best = Double.NaN;
         for (int s = 0; s < nStrips; s++) {
             // a ray outside the bearings of a strip's corners cannot meet it (this only saves work)
@@ -148,9 +152,6 @@ final class MarkingCamera {
         }
         return best * (dx * right.dx() + dy * right.dy());
     }
-
-    /** How far along the ray the road surface reaches without a gap, from the car. */
-
 
     private int nearbyStrips(double x, double y, Compass lane, double limit, MarkingKind kind) {
         int n = 0;

@@ -1,0 +1,104 @@
+package sitcov.vehicles;
+
+/**
+ * The directions of a sensor's fan of rays, worked out once, each with its unit vector. A sensor
+ * sweeps the same fan tick after tick (a lane's bearing is one of four), so it keeps the fans it
+ * used ({@link Cache}) instead of paying two trigonometric calls a ray a tick. Each form computes
+ * its angles by exactly the arithmetic its sensor used to do per ray, so every sample lands where
+ * it did.
+ */
+final class RayFan {
+    /** How the rays' angles are laid out. */
+    enum Form {
+        /** From {@code first} degrees left of the bearing down to {@code last}, {@code step} apart (the camera). */
+        STEPPING_RIGHT,
+        /** {@code first} rays, {@code step} degrees apart, starting {@code last} degrees right of the bearing (the LIDAR). */
+        FROM_THE_RIGHT
+    }
+
+    private final Form form;
+    private final double bearing;
+    private final double first;
+    private final double last;
+    private final double step;
+    private final double[] offsets;
+    private final double[] dx;
+    private final double[] dy;
+
+    private RayFan(Form form, double bearing, double first, double last, double step) {
+        this.form = form;
+        this.bearing = bearing;
+        this.first = first;
+        this.last = last;
+        this.step = step;
+        int count = 0;
+        if (form == Form.FROM_THE_RIGHT) {
+            count = (int) first;
+        } else {
+            for (double i = first; i >= last - 1e-9; i -= step) {
+                count++;
+            }
+        }
+        offsets = new double[count];
+        dx = new double[count];
+        dy = new double[count];
+        double i = first;
+        for (int k = 0; k < count; k++) {
+            double degrees;
+            if (form == Form.FROM_THE_RIGHT) {
+                degrees = bearing - last + k * step;
+                offsets[k] = degrees - bearing;
+            } else {
+                degrees = bearing + i;
+                offsets[k] = i;
+                i -= step;
+            }
+            double r = Math.toRadians(degrees);
+            dx[k] = Math.sin(r);
+            dy[k] = Math.cos(r);
+        }
+    }
+
+    int size() {
+        return offsets.length;
+    }
+
+    /** Degrees left of the bearing. */
+    double offset(int ray) {
+        return offsets[ray];
+    }
+
+    double dx(int ray) {
+        return dx[ray];
+    }
+
+    double dy(int ray) {
+        return dy[ray];
+    }
+
+    private boolean is(Form f, double b, double fi, double l, double s) {
+        return form == f && bearing == b && first == fi && last == l && step == s;
+    }
+
+    /** The few fans one sensor sweeps; a fan not kept is made and replaces the oldest. */
+    static final class Cache {
+        private final RayFan[] fans;
+        private int next;
+
+        Cache(int size) {
+            fans = new RayFan[size];
+        }
+
+        RayFan fan(Form form, double bearing, double first, double last, double step) {
+            for (RayFan fan : fans) {
+                if (fan != null && fan.is(form, bearing, first, last, step)) {
+                    return fan;
+                }
+            }
+            RayFan made = new RayFan(form, bearing, first, last, step);
+            fans[next] = made;
+            next = (next + 1) % fans.length;
+            return made;
+        }
+    }
+}

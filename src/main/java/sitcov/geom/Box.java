@@ -22,6 +22,10 @@ public final class Box {
     private final double sy;
 
     private Box(double cx, double cy, double bearing, double length, double width) {
+        this(cx, cy, bearing, Bearing.dx(bearing), Bearing.dy(bearing), length, width);
+    }
+
+    private Box(double cx, double cy, double bearing, double fx, double fy, double length, double width) {
         if (!(length > 0 && width > 0)) {
             throw new IllegalArgumentException("a box needs a positive length and width");
         }
@@ -30,8 +34,8 @@ public final class Box {
         this.bearing = bearing;
         this.halfLength = length / 2;
         this.halfWidth = width / 2;
-        this.fx = Bearing.dx(bearing);
-        this.fy = Bearing.dy(bearing);
+        this.fx = fx;
+        this.fy = fy;
         this.sx = fy;
         this.sy = -fx;
     }
@@ -40,6 +44,16 @@ public final class Box {
     public static Box behind(double x, double y, double bearing, double length, double width) {
         double h = length / 2;
         return new Box(x - h * Bearing.dx(bearing), y - h * Bearing.dy(bearing), bearing, length, width);
+    }
+
+    /**
+     * {@link #behind(double, double, double, double, double)} for a caller that keeps its
+     * heading's unit vector: ({@code fx}, {@code fy}) must be ({@code Bearing.dx(bearing)},
+     * {@code Bearing.dy(bearing)}), which saves working them out again.
+     */
+    public static Box behind(double x, double y, double bearing, double fx, double fy, double length, double width) {
+        double h = length / 2;
+        return new Box(x - h * fx, y - h * fy, bearing, fx, fy, length, width);
     }
 
     /** A footprint centred on ({@code x}, {@code y}). */

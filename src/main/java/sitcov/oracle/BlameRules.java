@@ -14,7 +14,7 @@ final class BlameRules {
             return Blame.EXCUSED_STANDING_STILL;
         }
         double headingDifference = Math.abs(Bearing.turn(car.heading(), other.heading()));
-        double behind = (other.x() - car.x()) * Bearing.dx(car.heading()) + (other.y() - car.y()) * Bearing.dy(car.heading());
+        double behind = (other.x() - car.x()) * car.headingDx() + (other.y() - car.y()) * car.headingDy();
         if (headingDifference < 45 && behind < 0 && other.speed() > car.speed()) {
             return Blame.EXCUSED_HIT_FROM_BEHIND;
         }

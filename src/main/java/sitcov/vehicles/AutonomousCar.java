@@ -72,7 +72,7 @@ public final class AutonomousCar implements Vehicle, Steppable {
         followHeadingIntoLane();
         estimate = lookForMarkings();
         laneCentre = laneMemory.laneCentre(lane, body.x(), body.y(), estimate);
-        traffic.scan(scene, this, body.x(), body.y(), body.heading(), lane, laneCentre, -5, 40);
+        traffic.scan(scene, this, lane, laneCentre, -5, 40);
         junctions.releaseIfLeft();
         junctions.plan(intent, lane);
         if (!junctions.isCrossing()) {
@@ -274,6 +274,16 @@ public final class AutonomousCar implements Vehicle, Steppable {
     @Override
     public double heading() {
         return body.heading();
+    }
+
+    @Override
+    public double headingDx() {
+        return body.headingDx();
+    }
+
+    @Override
+    public double headingDy() {
+        return body.headingDy();
     }
 
     @Override

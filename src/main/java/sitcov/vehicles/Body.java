@@ -14,6 +14,9 @@ final class Body {
     private double x;
     private double y;
     private double heading;
+    /** The unit vector along the heading, kept with it: most of a tick's geometry needs it. */
+    private double headingDx;
+    private double headingDy;
     private double speed;
     /** The footprint last handed out, while the body has not moved since: most ticks ask for it many times. */
     private Box footprint;
@@ -22,7 +25,13 @@ final class Body {
         this.pivot = pivot;
         this.x = x;
         this.y = y;
-        this.heading = Bearing.normalise(heading);
+        setHeading(heading);
+    }
+
+    private void setHeading(double bearing) {
+        heading = Bearing.normalise(bearing);
+        headingDx = Bearing.dx(heading);
+        headingDy = Bearing.dy(heading);
     }
 
     double x() {
@@ -37,6 +46,14 @@ final class Body {
         return heading;
     }
 
+    double headingDx() {
+        return headingDx;
+    }
+
+    double headingDy() {
+        return headingDy;
+    }
+
     double speed() {
         return speed;
     }
@@ -44,7 +61,7 @@ final class Body {
     /** Its footprint ({@code length} by {@code width}, trailing its front centre); the same object until it moves. */
     Box footprint(double length, double width) {
         if (footprint == null || footprint.length() != length || footprint.width() != width) {
-            footprint = Box.behind(x, y, heading, length, width);
+            footprint = Box.behind(x, y, heading, headingDx, headingDy, length, width);
         }
         return footprint;
     }
@@ -53,7 +70,7 @@ final class Body {
         footprint = null;
         x = nx;
         y = ny;
-        heading = Bearing.normalise(nheading);
+        setHeading(nheading);
         speed = 0;
     }
 
@@ -91,12 +108,14 @@ final class Body {
     Box reachAfter(double targetSpeed, double bearing, double maxTurn, double length, double width) {
         double turn = Math.max(-maxTurn, Math.min(maxTurn, Bearing.turn(heading, bearing)));
         double h = Bearing.normalise(heading + turn);
-        double nx = x - pivot * Bearing.dx(heading) + pivot * Bearing.dx(h);
-        double ny = y - pivot * Bearing.dy(heading) + pivot * Bearing.dy(h);
+        // an unturned heading normalises to itself, so its kept vector is the turned one's
+        double hx = h == heading ? headingDx : Bearing.dx(h);
+        double hy = h == heading ? headingDy : Bearing.dy(h);
+        double nx = x - pivot * headingDx + pivot * hx;
+        double ny = y - pivot * headingDy + pivot * hy;
         double v = speedAfter(targetSpeed);
         double reach = v + Math.max(0, Dynamics.stoppingDistance(v) - v);
-        double r = Math.toRadians(h);
-        return Box.behind(nx + reach * Math.sin(r), ny + reach * Math.cos(r), h, length + reach - v, width);
+        return Box.behind(nx + reach * hx, ny + reach * hy, h, hx, hy, length + reach - v, width);
     }
 
     /** Turns towards {@code bearing} by at most {@code maxTurn} degrees. */
@@ -106,12 +125,12 @@ final class Body {
         if (turn == 0) {
             return;
         }
-        double px = x - pivot * Bearing.dx(heading);
-        double py = y - pivot * Bearing.dy(heading);
+        double px = x - pivot * headingDx;
+        double py = y - pivot * headingDy;
         footprint = null;
-        heading = Bearing.normalise(heading + turn);
-        x = px + pivot * Bearing.dx(heading);
-        y = py + pivot * Bearing.dy(heading);
+        setHeading(heading + turn);
+        x = px + pivot * headingDx;
+        y = py + pivot * headingDy;
     }
 
     /** Moves one tick along the heading at the current speed. */
@@ -119,8 +138,7 @@ final class Body {
         if (speed != 0) {
             footprint = null;
         }
-        double r = Math.toRadians(heading);
-        x += speed * Math.sin(r);
-        y += speed * Math.cos(r);
+        x += speed * headingDx;
+        y += speed * headingDy;
     }
 }

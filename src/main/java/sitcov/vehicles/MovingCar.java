@@ -261,8 +261,8 @@ public final class MovingCar implements Vehicle, Steppable {
      * under test's), which breaks gridlock; it always heeds the autonomous car.
      */
     private double keepDistance(boolean impatient) {
-        double fx = Bearing.dx(body.heading());
-        double fy = Bearing.dy(body.heading());
+        double fx = body.headingDx();
+        double fy = body.headingDy();
         double limit = Dynamics.MAX_SPEED;
         for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
             Vehicle other = scene.vehicles().get(each);
@@ -280,15 +280,20 @@ public final class MovingCar implements Vehicle, Steppable {
             if (ox * fx + oy * fy < -other.length() / 2 - 1e-9) {
                 continue;
             }
-            double delta = Math.toRadians(other.heading() - body.heading());
             double halfL = other.length() / 2;
-            double cx = other.x() - halfL * Bearing.dx(other.heading()) - body.x();
-            double cy = other.y() - halfL * Bearing.dy(other.heading()) - body.y();
+            double cx = other.x() - halfL * other.headingDx() - body.x();
+            double cy = other.y() - halfL * other.headingDy() - body.y();
             double u = cx * fx + cy * fy;
             double v = cx * fy - cy * fx;
+            double corridor = 1.3;
+            // the other's extent across is at most its half length plus half width: a car beyond
+            // that is out of the path whatever its heading (saves the trigonometry)
+            if (u < 0 || u > 40 || Math.abs(v) > halfL + other.width() / 2 + corridor) {
+                continue;
+            }
+            double delta = Math.toRadians(other.heading() - body.heading());
             double extentU = Math.abs(Math.cos(delta)) * halfL + Math.abs(Math.sin(delta)) * other.width() / 2;
             double extentV = Math.abs(Math.sin(delta)) * halfL + Math.abs(Math.cos(delta)) * other.width() / 2;
-            double corridor = 1.3;
             if (u < 0 || u > 40 || Math.abs(v) > extentV + corridor) {
                 continue;
             }
@@ -356,6 +361,16 @@ public final class MovingCar implements Vehicle, Steppable {
     @Override
     public double heading() {
         return body.heading();
+    }
+
+    @Override
+    public double headingDx() {
+        return body.headingDx();
+    }
+
+    @Override
+    public double headingDy() {
+        return body.headingDy();
     }
 
     @Override

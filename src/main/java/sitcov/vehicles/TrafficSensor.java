@@ -25,12 +25,14 @@ final class TrafficSensor {
     private double otherLaneGap;
 
     /**
-     * Scans from the car at ({@code x}, {@code y}) heading {@code heading}, with the lane
+     * Scans from the car {@code self} (from its anchor, along its heading), with the lane
      * running {@code lane} and its centre {@code laneCentre} metres to the car's right. Other-lane
      * vehicles between {@code fromU} and {@code toU} metres ahead mark the other lane occupied.
      */
-    void scan(Scene scene, Vehicle self, double x, double y, double heading, Compass lane, double laneCentre,
-              double fromU, double toU) {
+    void scan(Scene scene, Vehicle self, Compass lane, double laneCentre, double fromU, double toU) {
+        double x = self.x();
+        double y = self.y();
+        double heading = self.heading();
         pathGap = Double.POSITIVE_INFINITY;
         pathSpeed = 0;
         oncomingGap = Double.POSITIVE_INFINITY;
@@ -41,8 +43,8 @@ final class TrafficSensor {
         double rx = lane.right().dx();
         double ry = lane.right().dy();
         // the path ahead is judged along the car's own heading (it may be turning); the lanes along the lane
-        double hx = Bearing.dx(heading);
-        double hy = Bearing.dy(heading);
+        double hx = self.headingDx();
+        double hy = self.headingDy();
         for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
             Vehicle other = scene.vehicles().get(each);
             if (other == self || !other.isActive()) {
@@ -53,8 +55,8 @@ final class TrafficSensor {
             double s = Math.abs(Math.sin(delta));
             double halfL = other.length() / 2;
             double halfW = other.width() / 2;
-            double cx = other.x() - halfL * Bearing.dx(other.heading()) - x;
-            double cy = other.y() - halfL * Bearing.dy(other.heading()) - y;
+            double cx = other.x() - halfL * other.headingDx() - x;
+            double cy = other.y() - halfL * other.headingDy() - y;
             double u = cx * fx + cy * fy;
             double v = cx * rx + cy * ry;
             double extentU = c * halfL + s * halfW;

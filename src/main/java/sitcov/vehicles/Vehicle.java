@@ -1,5 +1,6 @@
 package sitcov.vehicles;
 
+import sitcov.geom.Bearing;
 import sitcov.geom.Box;
 
 /** What anyone may observe of a vehicle: where it is, where it faces, how fast it goes. */
@@ -13,6 +14,15 @@ public interface Vehicle {
 
     /** Bearing in degrees (0 south, 90 east, 180 north, 270 west). */
     double heading();
+
+    /** The x of the unit vector along its heading: {@code Bearing.dx(heading())}, which a car keeps rather than works out again. */
+    default double headingDx() {
+        return Bearing.dx(heading());
+    }
+
+    default double headingDy() {
+        return Bearing.dy(heading());
+    }
 
     /** Metres per tick. */
     double speed();

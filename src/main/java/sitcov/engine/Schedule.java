@@ -1,7 +1,6 @@
 package sitcov.engine;
 
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.List;
 import java.util.PriorityQueue;
 import java.util.random.RandomGenerator;
@@ -20,13 +19,8 @@ public final class Schedule {
     /** The time before any tick has run. */
     public static final long BEFORE_SIMULATION = -1;
 
-    private static final Comparator<Event> ORDER = Comparator
-            .comparingLong((Event e) -> e.tick)
-            .thenComparingInt(e -> e.ordering)
-            .thenComparingLong(e -> e.sequence);
-
     private final RandomGenerator shuffle;
-    private final PriorityQueue<Event> queue = new PriorityQueue<>(ORDER);
+    private final PriorityQueue<Event> queue = new PriorityQueue<>();
     private final List<Event> due = new ArrayList<>();
     private long time = BEFORE_SIMULATION;
     private long nextSequence;
@@ -145,7 +139,7 @@ public final class Schedule {
     }
 
     /** A scheduled agent; mutable only inside the schedule, where it is re-queued each interval. */
-    private final class Event implements Stoppable {
+    private final class Event implements Stoppable, Comparable<Event> {
         private long tick;
         private final int ordering;
         private final long sequence;
@@ -159,6 +153,18 @@ public final class Schedule {
             this.sequence = sequence;
             this.interval = interval;
             this.agent = agent;
+        }
+
+        /** By tick, then ordering, then the order of scheduling (written out: it runs a dozen times a tick). */
+        @Override
+        public int compareTo(Event o) {
+            if (tick != o.tick) {
+                return tick < o.tick ? -1 : 1;
+            }
+            if (ordering != o.ordering) {
+                return ordering < o.ordering ? -1 : 1;
+            }
+            return Long.compare(sequence, o.sequence);
         }
 
         @Override

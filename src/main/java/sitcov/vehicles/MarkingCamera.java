@@ -33,13 +33,11 @@ final class MarkingCamera {
     private final double[] stripLo = new double[MAX_CANDIDATES];
     private final double[] stripHi = new double[MAX_CANDIDATES];
     private final double[] seen = new double[MAX_RAYS];
-    /** Where this look's rays met a marking, and where the look the car kept did (for viewers; swapped, never copied). */
-    private double[] hitX = new double[MAX_RAYS];
-    private double[] hitY = new double[MAX_RAYS];
-    private int hitCount;
-    private double[] keptX = new double[MAX_RAYS];
-    private double[] keptY = new double[MAX_RAYS];
-    private int kept;
+    /** The last look with each of the (at most two: faulty and standard) settings; the one in hand. */
+    private final Look[] looks = new Look[2];
+    private Look look;
+    /** The look the car kept, for viewers. */
+    private Look kept;
     private final RoadReach roadReach;
     /** Four lanes, with the faulty and the standard settings. */
     private final RayFan.Cache fans = new RayFan.Cache(16);
@@ -49,10 +47,41 @@ final class MarkingCamera {
         this.roadReach = new RoadReach(network);
     }
 
-    /** Looks from ({@code x}, {@code y}) around {@code lane} and estimates where the lane is. */
+    /**
+     * Looks from ({@code x}, {@code y}) around {@code lane} and estimates where the lane is. The
+     * markings and the road never move, so a car standing where it stood at its last look with
+     * these settings sees what it saw then, and is told so without looking again.
+     */
     LaneEstimate look(double x, double y, Compass lane, CameraSettings settings) {
+        look = lookWith(settings);
+        if (look.isFrom(x, y, lane)) {
+            return look.estimate;
+        }
+        look.estimate = lookAfresh(x, y, lane, settings);
+        look.x = x;
+        look.y = y;
+        look.lane = lane;
+        return look.estimate;
+    }
+
+    private Look lookWith(CameraSettings settings) {
+        for (int k = 0; k < looks.length; k++) {
+            if (looks[k] == null) {
+                looks[k] = new Look(settings);
+                return looks[k];
+            }
+            if (looks[k].settings.equals(settings)) {
+                return looks[k];
+            }
+        }
+        // a third set of settings (never in a run, whose faults are fixed): forget the older look
+        looks[1] = new Look(settings);
+        return looks[1];
+    }
+
+    private LaneEstimate lookAfresh(double x, double y, Compass lane, CameraSettings settings) {
         double limit = settings.limit();
-        hitCount = 0;
+        look.hitCount = 0;
         roadReach.gather(x, y, limit);
         Compass right = lane.right();
         int n = nearbyStrips(x, y, lane, limit, MarkingKind.EDGE);
@@ -84,25 +113,19 @@ final class MarkingCamera {
 
     /** Keeps the last look's marking hits as the ones a viewer is shown (the car's own look, not a comparison's). */
     void keepHits() {
-        double[] x = keptX;
-        double[] y = keptY;
-        keptX = hitX;
-        keptY = hitY;
-        hitX = x;
-        hitY = y;
-        kept = hitCount;
+        kept = look;
     }
 
     int keptHits() {
-        return kept;
+        return kept == null ? 0 : kept.hitCount;
     }
 
     double keptX(int hit) {
-        return keptX[hit];
+        return kept.hitX[hit];
     }
 
     double keptY(int hit) {
-        return keptY[hit];
+        return kept.hitY[hit];
     }
 
     /** The mean lateral offset of the hits on the line nearest the car (one side's hits are in {@code seen}); NaN if none. */
@@ -145,10 +168,10 @@ final class MarkingCamera {
         if (Double.isNaN(best) || !roadReach.reaches(x, y, dx, dy, best)) {
             return Double.NaN;
         }
-        if (hitCount < MAX_RAYS) {
-            hitX[hitCount] = x + best * dx;
-            hitY[hitCount] = y + best * dy;
-            hitCount++;
+        if (look.hitCount < MAX_RAYS) {
+            look.hitX[look.hitCount] = x + best * dx;
+            look.hitY[look.hitCount] = y + best * dy;
+            look.hitCount++;
         }
         return best * (dx * right.dx() + dy * right.dy());
     }
@@ -194,5 +217,26 @@ final class MarkingCamera {
 
     private static boolean near(Rect r, double x, double y, double limit) {
         return r.minX() <= x + limit && r.maxX() >= x - limit && r.minY() <= y + limit && r.maxY() >= y - limit;
+    }
+
+    /** A look with one camera's settings: where it was taken from, what it estimated, where its rays met a marking. */
+    private static final class Look {
+        private final CameraSettings settings;
+        private final double[] hitX = new double[MAX_RAYS];
+        private final double[] hitY = new double[MAX_RAYS];
+        private int hitCount;
+        private double x = Double.NaN;
+        private double y = Double.NaN;
+        private Compass lane;
+        private LaneEstimate estimate;
+
+        private Look(CameraSettings settings) {
+            this.settings = settings;
+        }
+
+        boolean isFrom(double fromX, double fromY, Compass fromLane) {
+            // bit for bit (Double.compare tells −0 from 0): the look is reused only where it is certainly the same
+            return Double.compare(x, fromX) == 0 && Double.compare(y, fromY) == 0 && lane == fromLane;
+        }
     }
 }

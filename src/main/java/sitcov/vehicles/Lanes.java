@@ -1,5 +1,6 @@
 package sitcov.vehicles;
 
+import java.util.List;
 import sitcov.geom.Compass;
 import sitcov.world.Dimensions;
 import sitcov.world.Junction;
@@ -65,8 +66,10 @@ final class Lanes {
     static Junction nextJunction(RoadNetwork network, Road road, Compass direction, double x, double y, int skip) {
         Junction best = null;
         double bestDistance = Double.MAX_VALUE;
-        for (Junction junction : network.junctions()) {
-            if (junction.id() == skip || !road.carries(junction.centre())) {
+        List<Junction> on = network.junctionsOn(road);
+        for (int each = 0, count = on.size(); each < count; each++) {
+            Junction junction = on.get(each);
+            if (junction.id() == skip) {
                 continue;
             }
             double d = distanceToSquare(junction, direction, x, y);

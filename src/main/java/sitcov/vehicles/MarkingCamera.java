@@ -1,9 +1,11 @@
 package sitcov.vehicles;
 
+import java.util.List;
 import sitcov.geom.Bearing;
 import sitcov.geom.Compass;
 import sitcov.geom.Rays;
 import sitcov.geom.Rect;
+import sitcov.world.Axis;
 import sitcov.world.Marking;
 import sitcov.world.MarkingKind;
 import sitcov.world.RoadNetwork;
@@ -178,12 +180,11 @@ final class MarkingCamera {
 
     private int nearbyStrips(double x, double y, Compass lane, double limit, MarkingKind kind) {
         int n = 0;
-        boolean northSouth = lane.isNorthSouth();
-        for (Marking marking : network.markings()) {
-            Rect strip = marking.strip();
-            // the camera follows lines that run along the lane; across-lines belong to other roads
-            boolean alongLane = northSouth ? strip.height() > strip.width() : strip.width() > strip.height();
-            if (marking.kind() == kind && alongLane && n < MAX_CANDIDATES && near(strip, x, y, limit)) {
+        // the camera follows lines that run along the lane; across-lines belong to other roads
+        List<Marking> along = network.markings(kind, Axis.of(lane));
+        for (int each = 0, count = along.size(); each < count; each++) {
+            Rect strip = along.get(each).strip();
+            if (n < MAX_CANDIDATES && near(strip, x, y, limit)) {
                 bearingsOf(n, strip, x, y, lane.bearing());
                 strips[n++] = strip;
             }

@@ -317,7 +317,7 @@ public final class MovingCar implements Vehicle, Steppable {
 
     /** Enters again at a random dead end, if its square is free. */
     private void reenter() {
-        List<Junction> deadEnds = scene.network().junctions().stream().filter(Junction::isDeadEnd).toList();
+        List<Junction> deadEnds = scene.network().deadEnds();
         if (deadEnds.isEmpty()) {
             return;
         }

@@ -7,7 +7,10 @@ import static sitcov.world.Dimensions.HALF_ROAD;
 
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.EnumMap;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import sitcov.geom.Box;
 import sitcov.geom.Compass;
@@ -24,6 +27,8 @@ public final class RoadNetwork {
     private final List<Rect> surfaces;
     private final List<Rect> zones;
     private final List<Marking> markings;
+    /** What a run asks of the network each tick, worked out on first use (map generation never asks). */
+    private volatile Lookups lookups;
 
     public RoadNetwork(List<Road> roads, List<Junction> junctions) {
         this.roads = List.copyOf(roads);
@@ -40,6 +45,47 @@ public final class RoadNetwork {
             paint.addAll(markingsOf(road));
         }
         this.markings = List.copyOf(paint);
+    }
+
+    private Lookups lookups() {
+        Lookups made = lookups;
+        if (made == null) {
+            made = new Lookups(this);
+            lookups = made;
+        }
+        return made;
+    }
+
+    /** Immutable once made; two threads that both make it make equal ones. */
+    private static final class Lookups {
+        private final List<Junction> deadEnds;
+        /** Per road, the junctions whose centre it carries, in junction order: cars ask each tick what junction is next. */
+        private final Map<Road, List<Junction>> junctionsOn = new IdentityHashMap<>();
+        /** Per kind and axis, the markings whose strips run along that axis, in marking order: the camera looks for these. */
+        private final Map<MarkingKind, Map<Axis, List<Marking>>> markingsAlong = new EnumMap<>(MarkingKind.class);
+
+        private Lookups(RoadNetwork network) {
+            deadEnds = network.junctions.stream().filter(Junction::isDeadEnd).toList();
+            for (Road road : network.roads) {
+                junctionsOn.put(road, network.carried(road));
+            }
+            for (MarkingKind kind : MarkingKind.values()) {
+                Map<Axis, List<Marking>> byAxis = new EnumMap<>(Axis.class);
+                for (Axis axis : Axis.values()) {
+                    byAxis.put(axis, network.markings.stream()
+                            .filter(m -> m.kind() == kind && runsAlong(m.strip(), axis)).toList());
+                }
+                markingsAlong.put(kind, byAxis);
+            }
+        }
+    }
+
+    private List<Junction> carried(Road road) {
+        return junctions.stream().filter(j -> road.carries(j.centre())).toList();
+    }
+
+    private static boolean runsAlong(Rect strip, Axis axis) {
+        return axis == Axis.NORTH_SOUTH ? strip.height() > strip.width() : strip.width() > strip.height();
     }
 
     public static RoadNetwork of(Layout layout) {
@@ -62,6 +108,22 @@ public final class RoadNetwork {
     /** Edge and centre lines, cut wherever a junction square crosses the road. */
     public List<Marking> markings() {
         return markings;
+    }
+
+    /** The dead ends, in junction order: where moving cars leave and enter. */
+    public List<Junction> deadEnds() {
+        return lookups().deadEnds;
+    }
+
+    /** The junctions whose centre lies on {@code road}'s axis between its ends, in junction order. */
+    public List<Junction> junctionsOn(Road road) {
+        List<Junction> on = lookups().junctionsOn.get(road);
+        return on != null ? on : carried(road);
+    }
+
+    /** The markings of {@code kind} whose strips are longer along {@code axis} than across it, in marking order. */
+    public List<Marking> markings(MarkingKind kind, Axis axis) {
+        return lookups().markingsAlong.get(kind).get(axis);
     }
 
     /** The first road (in road order) whose surface holds the point, or null. */

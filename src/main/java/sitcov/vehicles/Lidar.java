@@ -31,6 +31,31 @@ final class Lidar {
     /** Four lanes, and the heading fault 18 sweeps along. */
     private final RayFan.Cache fans = new RayFan.Cache(6);
 
+    /** What the last full sweep looked at: a sweep from the same place over the same things sees the same. */
+    private final Box[] sweptObjects = new Box[MAX_OBJECTS];
+    private final boolean[] sweptParked = new boolean[MAX_OBJECTS];
+    private int sweptCount = -1;
+    private double sweptX;
+    private double sweptY;
+    private double sweptBearing;
+    private Compass sweptLane;
+    private int sweptHits;
+
+    /**
+     * Per ray, the nearest sample on a parked car and whether the road reaches it, for the parked
+     * cars of the place and bearing below: a car standing still (waiting, or stuck) sweeps the same
+     * parked cars tick after tick while traffic passes, and only the traffic need be swept again.
+     */
+    private final double[] parkedBest = new double[RAYS];
+    private final boolean[] parkedOnRoad = new boolean[RAYS];
+    private final Box[] parkedSwept = new Box[MAX_OBJECTS];
+    private int parkedCount = -1;
+    private double parkedX;
+    private double parkedY;
+    private double parkedBearing;
+
+    private final double[] best = new double[RAYS];
+    private final boolean[] byVehicle = new boolean[RAYS];
     private final double[] hitU = new double[RAYS];
     private final double[] hitV = new double[RAYS];
     private final boolean[] hitParked = new boolean[RAYS];
@@ -84,38 +109,125 @@ final class Lidar {
             // moving cars matter to this sensor only as what hides parked cars
             return 0;
         }
+        if (sweepsAsBefore(x, y, centreBearing, lane, n)) {
+            hits = sweptHits;
+            return hits;
+        }
+        // parked cars come first among the objects, and win a ray they tie on: sweep them, then the traffic
+        int parked = 0;
+        while (parked < n && objectParked[parked]) {
+            parked++;
+        }
+        RayFan fan = fans.fan(RayFan.Form.FROM_THE_RIGHT, centreBearing, RAYS, ARC / 2, ANGULAR_STEP);
         roadReach.gather(x, y, RANGE);
-        for (int k = 0; k < n; k++) {
+        if (!parkedSweptAsBefore(x, y, centreBearing, parked)) {
+            sweepParked(x, y, centreBearing, parked, fan);
+        }
+        System.arraycopy(parkedBest, 0, best, 0, RAYS);
+        java.util.Arrays.fill(byVehicle, false);
+        for (int k = parked; k < n; k++) {
             raysCovering(k, x, y, centreBearing);
+            for (int ray = firstRay[k]; ray <= lastRay[k]; ray++) {
+                double d = sample(k, x, y, fan, ray);
+                if (!Double.isNaN(d) && (Double.isNaN(best[ray]) || d < best[ray])) {
+                    best[ray] = d;
+                    byVehicle[ray] = true;
+                }
+            }
         }
         Compass right = lane.right();
         Compass ahead = lane;
-        RayFan fan = fans.fan(RayFan.Form.FROM_THE_RIGHT, centreBearing, RAYS, ARC / 2, ANGULAR_STEP);
         for (int ray = 0; ray < RAYS; ray++) {
+            if (Double.isNaN(best[ray])) {
+                continue;
+            }
             double dx = fan.dx(ray);
             double dy = fan.dy(ray);
-            double best = Double.NaN;
-            boolean parked = false;
-            for (int k = 0; k < n; k++) {
-                if (ray >= firstRay[k] && ray <= lastRay[k] && objects[k].rayInterval(x, y, dx, dy, interval)) {
-                    double d = Rays.firstSample(interval[0], interval[1], 0, RANGE_STEP, RANGE);
-                    if (!Double.isNaN(d) && (Double.isNaN(best) || d < best)) {
-                        best = d;
-                        parked = objectParked[k];
-                    }
-                }
-            }
             // the ray stops where it leaves the road; only a ray that hit something needs to know where
-            if (!Double.isNaN(best) && roadReach.reaches(x, y, dx, dy, best)) {
-                double hx = best * dx;
-                double hy = best * dy;
+            if (byVehicle[ray] ? roadReach.reaches(x, y, dx, dy, best[ray]) : parkedOnRoad[ray]) {
+                double hx = best[ray] * dx;
+                double hy = best[ray] * dy;
                 hitU[hits] = hx * ahead.dx() + hy * ahead.dy();
                 hitV[hits] = hx * right.dx() + hy * right.dy();
-                hitParked[hits] = parked;
+                hitParked[hits] = !byVehicle[ray];
                 hits++;
             }
         }
+        remember(x, y, centreBearing, lane, n);
         return hits;
+    }
+
+    /** The first sample of the ray on object {@code k}, or NaN. */
+    private double sample(int k, double x, double y, RayFan fan, int ray) {
+        if (!objects[k].rayInterval(x, y, fan.dx(ray), fan.dy(ray), interval)) {
+            return Double.NaN;
+        }
+        return Rays.firstSample(interval[0], interval[1], 0, RANGE_STEP, RANGE);
+    }
+
+    /** Sweeps the first {@code parked} objects (the parked cars): the nearest sample per ray, the first car's on a tie. */
+    private void sweepParked(double x, double y, double centreBearing, int parked, RayFan fan) {
+        java.util.Arrays.fill(parkedBest, Double.NaN);
+        for (int k = 0; k < parked; k++) {
+            raysCovering(k, x, y, centreBearing);
+            for (int ray = firstRay[k]; ray <= lastRay[k]; ray++) {
+                double d = sample(k, x, y, fan, ray);
+                if (!Double.isNaN(d) && (Double.isNaN(parkedBest[ray]) || d < parkedBest[ray])) {
+                    parkedBest[ray] = d;
+                }
+            }
+        }
+        for (int ray = 0; ray < RAYS; ray++) {
+            parkedOnRoad[ray] = !Double.isNaN(parkedBest[ray])
+                    && roadReach.reaches(x, y, fan.dx(ray), fan.dy(ray), parkedBest[ray]);
+        }
+        System.arraycopy(objects, 0, parkedSwept, 0, parked);
+        parkedCount = parked;
+        parkedX = x;
+        parkedY = y;
+        parkedBearing = centreBearing;
+    }
+
+    private boolean parkedSweptAsBefore(double x, double y, double centreBearing, int parked) {
+        if (parked != parkedCount || Double.compare(x, parkedX) != 0 || Double.compare(y, parkedY) != 0
+                || Double.compare(centreBearing, parkedBearing) != 0) {
+            return false;
+        }
+        for (int k = 0; k < parked; k++) {
+            if (objects[k] != parkedSwept[k]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Whether this sweep has the last full sweep's place, bearing, frame and objects: parked cars
+     * never move and a vehicle's footprint is a new object once it has moved, so the same objects
+     * in the same order give the same hits, still in the buffers.
+     */
+    private boolean sweepsAsBefore(double x, double y, double centreBearing, Compass lane, int n) {
+        if (n != sweptCount || lane != sweptLane || Double.compare(x, sweptX) != 0 || Double.compare(y, sweptY) != 0
+                || Double.compare(centreBearing, sweptBearing) != 0) {
+            return false;
+        }
+        for (int k = 0; k < n; k++) {
+            if (objects[k] != sweptObjects[k] || objectParked[k] != sweptParked[k]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private void remember(double x, double y, double centreBearing, Compass lane, int n) {
+        System.arraycopy(objects, 0, sweptObjects, 0, n);
+        System.arraycopy(objectParked, 0, sweptParked, 0, n);
+        sweptCount = n;
+        sweptX = x;
+        sweptY = y;
+        sweptBearing = centreBearing;
+        sweptLane = lane;
+        sweptHits = hits;
     }
 
     /**

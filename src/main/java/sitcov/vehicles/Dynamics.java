@@ -54,18 +54,77 @@ public final class Dynamics {
         if (slowingDistance(MAX_SPEED, target) <= distance) {
             return MAX_SPEED;
         }
-        // slowing distance grows with the starting speed: bisect to a millimetre a tick
-        double lo = target;
-        double hi = MAX_SPEED;
-        while (hi - lo > 0.001) {
-            double mid = (lo + hi) / 2;
-            if (slowingDistance(mid, target) <= distance) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
+        return SlowingBisection.of(target).speedFor(distance);
+    }
+
+    /**
+     * The bisection for {@link #speedToSlowTo}: slowing distance grows with the starting speed, so
+     * bisect between the target and full speed to a millimetre a tick. The comparisons it makes
+     * depend only on the target, so each target's tree of them is worked out once; following it
+     * takes the same branches, and gives the same speed, as bisecting afresh.
+     */
+    private static final class SlowingBisection {
+        /** Cars slow to a handful of speeds; a tree each, shared by every thread (immutable once made). */
+        private static volatile SlowingBisection[] made = new SlowingBisection[0];
+
+        private final double target;
+        private int nodes;
+        private double[] speed = new double[64];
+        private double[] threshold = new double[64];
+        private int[] fits = new int[64];
+        private int[] tooFar = new int[64];
+
+        private SlowingBisection(double target) {
+            this.target = target;
+            grow(target, MAX_SPEED);
         }
-        return lo;
+
+        static SlowingBisection of(double target) {
+            SlowingBisection[] known = made;
+            for (SlowingBisection tree : known) {
+                if (tree.target == target) {
+                    return tree;
+                }
+            }
+            SlowingBisection tree = new SlowingBisection(target);
+            synchronized (SlowingBisection.class) {
+                SlowingBisection[] more = java.util.Arrays.copyOf(made, made.length + 1);
+                more[more.length - 1] = tree;
+                made = more;
+            }
+            return tree;
+        }
+
+        /** Node for the interval [lo, hi]: a leaf answering lo once the interval is a millimetre, else a comparison at its middle. */
+        private int grow(double lo, double hi) {
+            int node = nodes++;
+            if (node == speed.length) {
+                speed = java.util.Arrays.copyOf(speed, 2 * node);
+                threshold = java.util.Arrays.copyOf(threshold, 2 * node);
+                fits = java.util.Arrays.copyOf(fits, 2 * node);
+                tooFar = java.util.Arrays.copyOf(tooFar, 2 * node);
+            }
+            if (!(hi - lo > 0.001)) {
+                speed[node] = lo;
+                fits[node] = -1;
+                return node;
+            }
+            double mid = (lo + hi) / 2;
+            threshold[node] = slowingDistance(mid, target);
+            int whenFits = grow(mid, hi);
+            int whenTooFar = grow(lo, mid);
+            fits[node] = whenFits;
+            tooFar[node] = whenTooFar;
+            return node;
+        }
+
+        double speedFor(double distance) {
+            int node = 0;
+            while (fits[node] >= 0) {
+                node = threshold[node] <= distance ? fits[node] : tooFar[node];
+            }
+            return speed[node];
+        }
     }
 
     private static double slowingDistance(double from, double target) {

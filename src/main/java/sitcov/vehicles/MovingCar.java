@@ -291,14 +291,16 @@ public final class MovingCar implements Vehicle, Steppable {
             if (u < 0 || u > 40 || Math.abs(v) > halfL + other.width() / 2 + corridor) {
                 continue;
             }
-            double delta = Math.toRadians(other.heading() - body.heading());
-            double extentU = Math.abs(Math.cos(delta)) * halfL + Math.abs(Math.sin(delta)) * other.width() / 2;
-            double extentV = Math.abs(Math.sin(delta)) * halfL + Math.abs(Math.cos(delta)) * other.width() / 2;
+            double delta = other.heading() - body.heading();
+            double cos = Bearing.cos(delta);
+            double sin = Bearing.sin(delta);
+            double extentU = Math.abs(cos) * halfL + Math.abs(sin) * other.width() / 2;
+            double extentV = Math.abs(sin) * halfL + Math.abs(cos) * other.width() / 2;
             if (u < 0 || u > 40 || Math.abs(v) > extentV + corridor) {
                 continue;
             }
             double gap = u - extentU;
-            double lead = other.speed() * Math.cos(delta);
+            double lead = other.speed() * cos;
             double room = lead >= 0 ? gap + Dynamics.stoppingDistance(lead) - lead - GAP : gap - GAP + 4 * lead;
             limit = Math.min(limit, Dynamics.speedToStopWithin(room));
         }

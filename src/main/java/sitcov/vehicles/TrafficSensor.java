@@ -50,9 +50,10 @@ final class TrafficSensor {
             if (other == self || !other.isActive()) {
                 continue;
             }
-            double delta = Math.toRadians(other.heading() - lane.bearing());
-            double c = Math.abs(Math.cos(delta));
-            double s = Math.abs(Math.sin(delta));
+            double delta = other.heading() - lane.bearing();
+            double cos = Bearing.cos(delta);
+            double c = Math.abs(cos);
+            double s = Math.abs(Bearing.sin(delta));
             double halfL = other.length() / 2;
             double halfW = other.width() / 2;
             double cx = other.x() - halfL * other.headingDx() - x;
@@ -65,17 +66,18 @@ final class TrafficSensor {
             if (distance > RANGE + extentU || !inField(cx, cy, heading, distance)) {
                 continue;
             }
-            double along = other.speed() * Math.cos(delta);
+            double along = other.speed() * cos;
             double gap = u - extentU;
-            double headingDelta = Math.toRadians(other.heading() - heading);
-            double pc = Math.abs(Math.cos(headingDelta));
-            double ps = Math.abs(Math.sin(headingDelta));
+            double headingDelta = other.heading() - heading;
+            double headingCos = Bearing.cos(headingDelta);
+            double pc = Math.abs(headingCos);
+            double ps = Math.abs(Bearing.sin(headingDelta));
             double pathU = cx * hx + cy * hy;
             double pathV = cx * hy - cy * hx;
             double pathGapHere = pathU - (pc * halfL + ps * halfW);
             if (pathGapHere > -1 && Math.abs(pathV) < ps * halfL + pc * halfW + PATH_HALF_WIDTH && pathGapHere < pathGap) {
                 pathGap = Math.max(0, pathGapHere);
-                pathSpeed = other.speed() * Math.cos(headingDelta);
+                pathSpeed = other.speed() * headingCos;
             }
             boolean inOtherLane = v + extentV > laneCentre + 1.6 && v - extentV < laneCentre + 4.4;
             if (inOtherLane) {

@@ -38,4 +38,16 @@ class BearingTest {
         assertEquals(-20, Bearing.turn(10, 350), EPS);
         assertEquals(180, Bearing.turn(0, 180), EPS);
     }
+
+    @Test
+    void cosAndSinOfDegreesAreMathsOwnToTheBitWhetherLookedUpOrNot() {
+        double[] degrees = {0.0, -0.0, 90, -90, 180, -180, 270, -270, 360, -360, 450, -450, 45, 89.99999999, 1e-300,
+            -1e-300, 15, 359.5, -0.5, 123.456, Double.NaN};
+        for (double d : degrees) {
+            assertEquals(Double.doubleToRawLongBits(Math.cos(Math.toRadians(d))), Double.doubleToRawLongBits(Bearing.cos(d)),
+                    "cos " + d);
+            assertEquals(Double.doubleToRawLongBits(Math.sin(Math.toRadians(d))), Double.doubleToRawLongBits(Bearing.sin(d)),
+                    "sin " + d);
+        }
+    }
 }

@@ -87,4 +87,45 @@ class DynamicsTest {
         body.brake();
         assertEquals(0, body.speed());
     }
+
+    @Test
+    void slowingToATargetFollowsThePlainBisectionToTheBitAtEveryDistance() {
+        double[] targets = {0, 0.3, 0.38, 0.5, 0.8, 1.0, 1.5, 2.0, 0.123};
+        for (double target : targets) {
+            for (double distance = -1; distance < 30; distance += 0.0137) {
+                assertEquals(Double.doubleToRawLongBits(plainBisection(target, distance)),
+                        Double.doubleToRawLongBits(Dynamics.speedToSlowTo(target, distance)),
+                        "target " + target + ", distance " + distance);
+            }
+        }
+    }
+
+    /** The bisection as written before the tree: an independent statement of what speedToSlowTo must answer. */
+    private static double plainBisection(double target, double distance) {
+        if (distance <= 0 || target >= Dynamics.MAX_SPEED) {
+            return Math.min(target, Dynamics.MAX_SPEED);
+        }
+        if (slowing(Dynamics.MAX_SPEED, target) <= distance) {
+            return Dynamics.MAX_SPEED;
+        }
+        double lo = target;
+        double hi = Dynamics.MAX_SPEED;
+        while (hi - lo > 0.001) {
+            double mid = (lo + hi) / 2;
+            if (slowing(mid, target) <= distance) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
+    }
+
+    private static double slowing(double from, double target) {
+        double d = from;
+        for (double v = from; v > target; v -= Dynamics.BRAKING) {
+            d += v;
+        }
+        return d;
+    }
 }

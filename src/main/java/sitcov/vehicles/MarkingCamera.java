@@ -153,13 +153,14 @@ final class MarkingCamera {
     /** The lateral offset (right positive) of the ray's first marking hit, or NaN. */
     private double lateralOfHit(double x, double y, RayFan fan, int ray, Compass right, int nStrips,
                                 CameraSettings settings, double limit) {
-        double offset = fan.offset(ray);
+        double slope = fan.slope(ray);
         double dx = fan.dx(ray);
         double dy = fan.dy(ray);
         double best = Double.NaN;
         for (int s = 0; s < nStrips; s++) {
-            // a ray outside the bearings of a strip's corners cannot meet it (this only saves work)
-            if (offset >= stripLo[s] && offset <= stripHi[s] && strips[s].rayInterval(x, y, dx, dy, interval)) {
+            // a ray outside the slopes of a strip's corners cannot meet it (this only saves work; a ray
+            // with no slope, square to the lane or behind, is always tried)
+            if (!(slope < stripLo[s]) && !(slope > stripHi[s]) && strips[s].rayInterval(x, y, dx, dy, interval)) {
                 double d = Rays.firstSample(interval[0], interval[1], settings.rangeStart(), settings.rangeStep(), limit);
                 if (!Double.isNaN(d) && (Double.isNaN(best) || d < best)) {
                     best = d;
@@ -185,35 +186,58 @@ final class MarkingCamera {
         for (int each = 0, count = along.size(); each < count; each++) {
             Rect strip = along.get(each).strip();
             if (n < MAX_CANDIDATES && near(strip, x, y, limit)) {
-                bearingsOf(n, strip, x, y, lane.bearing());
+                slopesOf(n, strip, x, y, lane);
                 strips[n++] = strip;
             }
         }
         return n;
     }
 
-    /** The span of ray offsets (degrees left of the lane direction) that can meet strip {@code k}. */
-    private void bearingsOf(int k, Rect strip, double x, double y, double laneBearing) {
+    /**
+     * The span of ray slopes (left over ahead, in the lane's frame) that can meet strip {@code k},
+     * a little wider than exact: it only spares rays that cannot meet the strip the exact test.
+     * A ray from the car meets a strip only ahead of the car, where the slopes of the strip's
+     * points lie between those of its corners ahead; a strip reaching back beside or behind the
+     * car opens the span on that side.
+     */
+    private void slopesOf(int k, Rect strip, double x, double y, Compass lane) {
         if (strip.contains(x, y)) {
-            stripLo[k] = -360;
-            stripHi[k] = 360;
+            stripLo[k] = Double.NEGATIVE_INFINITY;
+            stripHi[k] = Double.POSITIVE_INFINITY;
             return;
         }
-        double lo = Double.MAX_VALUE;
-        double hi = -Double.MAX_VALUE;
+        Compass right = lane.right();
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
+        boolean back = false;
+        boolean anyLeft = false;
+        boolean anyRight = false;
         for (int corner = 0; corner < 4; corner++) {
-            double cx = (corner & 1) == 0 ? strip.minX() : strip.maxX();
-            double cy = (corner & 2) == 0 ? strip.minY() : strip.maxY();
-            double t = Bearing.turn(laneBearing, Bearing.between(x, y, cx, cy));
-            lo = Math.min(lo, t);
-            hi = Math.max(hi, t);
+            double ex = ((corner & 1) == 0 ? strip.minX() : strip.maxX()) - x;
+            double ey = ((corner & 2) == 0 ? strip.minY() : strip.maxY()) - y;
+            double ahead = ex * lane.dx() + ey * lane.dy();
+            double left = -(ex * right.dx() + ey * right.dy());
+            anyLeft |= left >= 0;
+            anyRight |= left <= 0;
+            if (ahead > 0) {
+                lo = Math.min(lo, left / ahead);
+                hi = Math.max(hi, left / ahead);
+            } else {
+                back = true;
+            }
         }
-        if (hi - lo >= 180) {
-            lo = -360;
-            hi = 360;
+        if (lo > hi) {
+            // wholly beside or behind the car: no ray ahead meets it
+            stripLo[k] = Double.POSITIVE_INFINITY;
+            stripHi[k] = Double.NEGATIVE_INFINITY;
+            return;
         }
-        stripLo[k] = lo - 1e-6;
-        stripHi[k] = hi + 1e-6;
+        if (back) {
+            lo = anyRight ? Double.NEGATIVE_INFINITY : lo;
+            hi = anyLeft ? Double.POSITIVE_INFINITY : hi;
+        }
+        stripLo[k] = lo - 1e-9 * (1 + Math.abs(lo));
+        stripHi[k] = hi + 1e-9 * (1 + Math.abs(hi));
     }
 
     private static boolean near(Rect r, double x, double y, double limit) {

@@ -1,5 +1,7 @@
 package sitcov.vehicles;
 
+import sitcov.geom.Bearing;
+
 /**
  * The directions of a sensor's fan of rays, worked out once, each with its unit vector. A sensor
  * sweeps the same fan tick after tick (a lane's bearing is one of four), so it keeps the fans it
@@ -24,6 +26,7 @@ final class RayFan {
     private final double[] offsets;
     private final double[] dx;
     private final double[] dy;
+    private final double[] slope;
 
     private RayFan(Form form, double bearing, double first, double last, double step) {
         this.form = form;
@@ -42,6 +45,9 @@ final class RayFan {
         offsets = new double[count];
         dx = new double[count];
         dy = new double[count];
+        slope = new double[count];
+        double ahead = Bearing.dx(bearing);
+        double aheadY = Bearing.dy(bearing);
         double i = first;
         for (int k = 0; k < count; k++) {
             double degrees;
@@ -56,6 +62,10 @@ final class RayFan {
             double r = Math.toRadians(degrees);
             dx[k] = Math.sin(r);
             dy[k] = Math.cos(r);
+            // left over ahead, relative to the bearing; none for a ray square to it or behind
+            double along = dx[k] * ahead + dy[k] * aheadY;
+            double left = dx[k] * aheadY - dy[k] * ahead;
+            slope[k] = along > 1e-6 ? left / along : Double.NaN;
         }
     }
 
@@ -66,6 +76,11 @@ final class RayFan {
     /** Degrees left of the bearing. */
     double offset(int ray) {
         return offsets[ray];
+    }
+
+    /** The ray's sideways run per metre ahead, left positive, relative to the fan's bearing; NaN square to it or behind. */
+    double slope(int ray) {
+        return slope[ray];
     }
 
     double dx(int ray) {

@@ -15,6 +15,7 @@ final class TrafficSensor {
     static final double FIELD = 45;
     /** Close by, the car sees all round (its mirrors): a car alongside or just behind is seen too. */
     static final double ALL_ROUND = 10;
+    private static final double COS_HALF_FIELD = Math.cos(Math.toRadians(FIELD / 2));
     /** Half the corridor a 2 m car sweeps, plus a margin. */
     static final double PATH_HALF_WIDTH = 1.3;
 
@@ -63,7 +64,7 @@ final class TrafficSensor {
             double extentU = c * halfL + s * halfW;
             double extentV = s * halfL + c * halfW;
             double distance = Math.sqrt(cx * cx + cy * cy);
-            if (distance > RANGE + extentU || !inField(cx, cy, heading, distance)) {
+            if (distance > RANGE + extentU || !inField(cx, cy, heading, hx, hy, distance)) {
                 continue;
             }
             double along = other.speed() * cos;
@@ -92,14 +93,23 @@ final class TrafficSensor {
         }
     }
 
-    private static boolean inField(double cx, double cy, double heading, double distance) {
+    /**
+     * Whether the point ({@code cx}, {@code cy}) from the sensor lies in the field of a sensor
+     * facing {@code heading} (unit vector {@code hx}, {@code hy}). The angle off the heading is
+     * judged by its cosine, and only a point within a hair of the field's edge is judged by the
+     * bearings themselves, which decide there exactly as they always did.
+     */
+    private static boolean inField(double cx, double cy, double heading, double hx, double hy, double distance) {
         if (distance <= ALL_ROUND) {
             return true;
         }
-        if (distance <= NEAR_RANGE) {
-            return Math.abs(Bearing.turn(heading, Bearing.between(0, 0, cx, cy))) <= 90;
+        double half = distance <= NEAR_RANGE ? 90 : FIELD / 2;
+        double cosine = (cx * hx + cy * hy) / distance;
+        double edge = distance <= NEAR_RANGE ? 0 : COS_HALF_FIELD;
+        if (Math.abs(cosine - edge) > 1e-9) {
+            return cosine > edge;
         }
-        return Math.abs(Bearing.turn(heading, Bearing.between(0, 0, cx, cy))) <= FIELD / 2;
+        return Math.abs(Bearing.turn(heading, Bearing.between(0, 0, cx, cy))) <= half;
     }
 
     /** Distance to the nearest vehicle in the car's path (infinite if none). */

@@ -59,7 +59,8 @@ final class BenchCommand implements Command {
         int candidates = options.count("--candidates", 1, MAX_CANDIDATES).orElse(DEFAULT_CANDIDATES);
         int judged = options.count("--judged", 1, MAX_JUDGED).orElse(DEFAULT_JUDGED);
 
-        int warmRuns = Math.min(maps, 50);
+        // the JIT needs a few hundred runs before the tick settles: fewer measure the compiler, not the car
+        int warmRuns = Math.min(2 * maps, 400);
         int warmCandidates = Math.min(candidates, 5_000);
         err.println("bench: warming up (" + warmRuns + " runs, " + warmCandidates + " candidate maps) ...");
         for (int i = 0; i < warmRuns; i++) {

@@ -2,28 +2,54 @@ package sitcov.vehicles;
 
 import sitcov.geom.Box;
 
-/** The check a moving car makes before each move, so that traffic keeps clear of everyone. */
+/**
+ * The check a moving car makes before each move, so that traffic keeps clear of everyone. One per
+ * car: it remembers who was near when last asked, so the check itself looks only at them.
+ */
 final class Clearance {
     /** Room kept round the autonomous car: traffic never touches it. */
     static final double AROUND_THE_CAR = 0.3;
     /** Anything whose anchor is further than this (squared, metres) is not looked at. */
     private static final double NEAR_SQ = 12 * 12;
 
-    private Clearance() {
+    /** Who {@link #anyoneNear} found near, in scene order: vehicles, then parked cars. */
+    private int[] nearVehicles = new int[16];
+    private int[] nearParked = new int[16];
+    private int vehiclesNear;
+    private int parkedNear;
+
+    /**
+     * Whether anything {@link #wouldTouch} looks at is near: most ticks nothing is, and the reach
+     * need not be built. Remembers who is, for {@link #wouldTouch} to ask next.
+     */
+    boolean anyoneNear(Scene scene, Vehicle self) {
+        vehiclesNear = 0;
+        parkedNear = 0;
+        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
+            Vehicle other = scene.vehicles().get(each);
+            if (other != self && other.isActive() && !isFar(self, other.x(), other.y())) {
+                nearVehicles = add(nearVehicles, vehiclesNear++, each);
+            }
+        }
+        for (int each = 0, count = scene.parkedBodies().size(); each < count; each++) {
+            Box parked = scene.parkedBodies().get(each);
+            if (!isFar(self, parked.centreX(), parked.centreY())) {
+                nearParked = add(nearParked, parkedNear++, each);
+            }
+        }
+        return vehiclesNear + parkedNear > 0;
     }
 
     /**
      * Whether the footprint {@code next} of {@code self} would touch another vehicle or a parked
-     * car that it does not touch already (a car already entangled may move off), or come within
+     * car near it (as {@link #anyoneNear} just found, nobody having moved since) that it does not
+     * touch already (a car already entangled may move off), or come within
      * {@link #AROUND_THE_CAR} of the autonomous car.
      */
-    static boolean wouldTouch(Scene scene, Vehicle self, Box next) {
+    boolean wouldTouch(Scene scene, Vehicle self, Box next) {
         Box now = null;
-        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
-            Vehicle other = scene.vehicles().get(each);
-            if (other == self || !other.isActive() || isFar(self, other.x(), other.y())) {
-                continue;
-            }
+        for (int k = 0; k < vehiclesNear; k++) {
+            Vehicle other = scene.vehicles().get(nearVehicles[k]);
             Box theirs = other instanceof AutonomousCar car ? car.keptClear() : other.footprint();
             if (next.overlaps(theirs)) {
                 now = now == null ? self.footprint() : now;
@@ -32,9 +58,9 @@ final class Clearance {
                 }
             }
         }
-        for (int each = 0, count = scene.parkedBodies().size(); each < count; each++) {
-            Box parked = scene.parkedBodies().get(each);
-            if (!isFar(self, parked.centreX(), parked.centreY()) && next.overlaps(parked)) {
+        for (int k = 0; k < parkedNear; k++) {
+            Box parked = scene.parkedBodies().get(nearParked[k]);
+            if (next.overlaps(parked)) {
                 now = now == null ? self.footprint() : now;
                 if (!now.overlaps(parked)) {
                     return true;
@@ -44,21 +70,10 @@ final class Clearance {
         return false;
     }
 
-    /** Whether anything {@link #wouldTouch} looks at is near: most ticks nothing is, and the reach need not be built. */
-    static boolean anyoneNear(Scene scene, Vehicle self) {
-        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
-            Vehicle other = scene.vehicles().get(each);
-            if (other != self && other.isActive() && !isFar(self, other.x(), other.y())) {
-                return true;
-            }
-        }
-        for (int each = 0, count = scene.parkedBodies().size(); each < count; each++) {
-            Box parked = scene.parkedBodies().get(each);
-            if (!isFar(self, parked.centreX(), parked.centreY())) {
-                return true;
-            }
-        }
-        return false;
+    private static int[] add(int[] list, int at, int index) {
+        int[] into = at < list.length ? list : java.util.Arrays.copyOf(list, 2 * list.length);
+        into[at] = index;
+        return into;
     }
 
     private static boolean isFar(Vehicle self, double ox, double oy) {

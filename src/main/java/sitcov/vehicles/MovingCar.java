@@ -61,6 +61,7 @@ public final class MovingCar implements Vehicle, Steppable {
     private boolean passing;
     private double passEnd;
     private int stoppedFor;
+    private final Clearance clearance = new Clearance();
 
     MovingCar(int id, Scene scene, StartPose start, RandomGenerator choices, RandomGenerator respawns) {
         this.id = id;
@@ -112,8 +113,8 @@ public final class MovingCar implements Vehicle, Steppable {
         limit = Math.min(limit, keepDistance(stoppedFor > IMPATIENCE));
         stoppedFor = body.speed() < 0.01 ? stoppedFor + 1 : 0;
         releaseJunctionIfLeft();
-        if (Clearance.anyoneNear(scene, this)
-                && Clearance.wouldTouch(scene, this, body.reachAfter(limit, bearing, Dynamics.MAX_TURN, length(), width()))) {
+        if (clearance.anyoneNear(scene, this)
+                && clearance.wouldTouch(scene, this, body.reachAfter(limit, bearing, Dynamics.MAX_TURN, length(), width()))) {
             // a driver who sees that the next move would leave no room to stop short of someone makes
             // an emergency stop (twice the planned braking, about 8 m/s²) and holds the wheel; it is
             // still bounded, so a car that cuts in close at speed can be hit
@@ -263,7 +264,8 @@ public final class MovingCar implements Vehicle, Steppable {
     private double keepDistance(boolean impatient) {
         double fx = body.headingDx();
         double fy = body.headingDy();
-        double limit = Dynamics.MAX_SPEED;
+        // the speed to stop within a room grows with the room: the least room sets the limit
+        double least = Double.POSITIVE_INFINITY;
         for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
             Vehicle other = scene.vehicles().get(each);
             if (other == this || !other.isActive()
@@ -302,9 +304,10 @@ public final class MovingCar implements Vehicle, Steppable {
             double gap = u - extentU;
             double lead = other.speed() * cos;
             double room = lead >= 0 ? gap + Dynamics.stoppingDistance(lead) - lead - GAP : gap - GAP + 4 * lead;
-            limit = Math.min(limit, Dynamics.speedToStopWithin(room));
+            least = Math.min(least, room);
         }
-        return limit;
+        return least == Double.POSITIVE_INFINITY ? Dynamics.MAX_SPEED
+                : Math.min(Dynamics.MAX_SPEED, Dynamics.speedToStopWithin(least));
     }
 
     private boolean hasLeftTheRoads() {

@@ -18,19 +18,28 @@ final class Clearance {
     private int vehiclesNear;
     private int parkedNear;
 
+    /** Starts a step's list of the vehicles near the car (its pass over the traffic fills it). */
+    void clearNear() {
+        vehiclesNear = 0;
+    }
+
     /**
-     * Whether anything {@link #wouldTouch} looks at is near: most ticks nothing is, and the reach
-     * need not be built. Remembers who is, for {@link #wouldTouch} to ask next.
+     * The active vehicle at scene index {@code index}, not the car itself, lies {@code distanceSq}
+     * (squared metres, anchor to anchor) from it: noted if near. Called in scene order.
+     */
+    void vehicleAt(int index, double distanceSq) {
+        if (!(distanceSq > NEAR_SQ)) {
+            nearVehicles = add(nearVehicles, vehiclesNear++, index);
+        }
+    }
+
+    /**
+     * Whether anything {@link #wouldTouch} looks at is near — the vehicles noted since
+     * {@link #clearNear}, nobody having moved since, and the parked cars: most ticks nothing is,
+     * and the reach need not be built. Remembers who is, for {@link #wouldTouch} to ask next.
      */
     boolean anyoneNear(Scene scene, Vehicle self) {
-        vehiclesNear = 0;
         parkedNear = 0;
-        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
-            Vehicle other = scene.vehicles().get(each);
-            if (other != self && other.isActive() && !isFar(self, other.x(), other.y())) {
-                nearVehicles = add(nearVehicles, vehiclesNear++, each);
-            }
-        }
         for (int each = 0, count = scene.parkedBodies().size(); each < count; each++) {
             Box parked = scene.parkedBodies().get(each);
             if (!isFar(self, parked.centreX(), parked.centreY())) {

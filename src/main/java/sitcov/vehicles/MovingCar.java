@@ -266,15 +266,18 @@ public final class MovingCar implements Vehicle, Steppable {
         double fy = body.headingDy();
         // the speed to stop within a room grows with the room: the least room sets the limit
         double least = Double.POSITIVE_INFINITY;
+        // the one pass over the traffic a step makes: it also tells the clearance check who is near
+        clearance.clearNear();
         for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
             Vehicle other = scene.vehicles().get(each);
-            if (other == this || !other.isActive()
-                    || (impatient && other.speed() == 0 && other.id() != AutonomousCar.ID)) {
+            if (other == this || !other.isActive()) {
                 continue;
             }
             double ox = other.x() - body.x();
             double oy = other.y() - body.y();
-            if (ox * ox + oy * oy > FOLLOW_RANGE_SQ) {
+            double distanceSq = ox * ox + oy * oy;
+            clearance.vehicleAt(each, distanceSq);
+            if (distanceSq > FOLLOW_RANGE_SQ || (impatient && other.speed() == 0 && other.id() != AutonomousCar.ID)) {
                 continue;
             }
             // the other's centre lies within half its length of its anchor: an anchor that far behind

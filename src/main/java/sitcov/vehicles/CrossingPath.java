@@ -52,6 +52,9 @@ final class CrossingPath {
     private final double[] xs;
     private final double[] ys;
     private final double[] headings;
+    /** The unit vectors of the headings, worked out once: the car steers by them every tick of a crossing. */
+    private final double[] headingDx;
+    private final double[] headingDy;
     private final boolean[] onTheSpot;
     private int progress;
 
@@ -60,6 +63,12 @@ final class CrossingPath {
         this.xs = xs;
         this.ys = ys;
         this.headings = headings;
+        this.headingDx = new double[headings.length];
+        this.headingDy = new double[headings.length];
+        for (int i = 0; i < headings.length; i++) {
+            headingDx[i] = Bearing.dx(headings[i]);
+            headingDy[i] = Bearing.dy(headings[i]);
+        }
         this.onTheSpot = onTheSpot;
     }
 
@@ -136,10 +145,10 @@ final class CrossingPath {
      * {@code heading}, at {@code speed}: the plan is for its rear axle, which moves along its
      * heading, so the axle is steered. The nearest path point only moves on.
      */
-    double bearing(double x, double y, double heading, double speed) {
-        double px = x - axle * Math.sin(Math.toRadians(heading));
-        double py = y - axle * Math.cos(Math.toRadians(heading));
-        return axleBearing(px, py, speed);
+    double bearing(Vehicle car) {
+        double px = car.x() - axle * car.headingDx();
+        double py = car.y() - axle * car.headingDy();
+        return axleBearing(px, py, car.speed());
     }
 
     private double axleBearing(double x, double y, double speed) {
@@ -168,9 +177,10 @@ final class CrossingPath {
         progress = nearest;
         // the heading planned a point ahead: on an arc, the nearest point's heading already lags
         int ahead = Math.min(nearest + 1, headings.length - 1);
-        double h = onTheSpot[ahead] ? headings[nearest] : headings[ahead];
-        double hx = Math.sin(Math.toRadians(h));
-        double hy = Math.cos(Math.toRadians(h));
+        int planned = onTheSpot[ahead] ? nearest : ahead;
+        double h = headings[planned];
+        double hx = headingDx[planned];
+        double hy = headingDy[planned];
         // how far the car is to the left of the path (left of a driver facing h is (cos h, -sin h))
         double left = (x - xs[nearest]) * hy - (y - ys[nearest]) * hx;
         return h - Math.toDegrees(Math.atan2(CROSS_TRACK_GAIN * left, speed + SOFTENING));
@@ -194,9 +204,9 @@ final class CrossingPath {
     }
 
     /** Distance from the car's rear axle to the next turn on the spot ahead, or infinity. */
-    double distanceToTurnOnTheSpot(double x, double y, double heading) {
-        double px = x - axle * Math.sin(Math.toRadians(heading));
-        double py = y - axle * Math.cos(Math.toRadians(heading));
+    double distanceToTurnOnTheSpot(Vehicle car) {
+        double px = car.x() - axle * car.headingDx();
+        double py = car.y() - axle * car.headingDy();
         for (int i = progress; i + 1 < onTheSpot.length; i++) {
             if (onTheSpot[i + 1]) {
                 return Math.hypot(xs[i] - px, ys[i] - py);

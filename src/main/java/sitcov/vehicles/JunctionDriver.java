@@ -281,13 +281,13 @@ final class JunctionDriver {
             return;
         }
         path.turned(car.heading());
-        intent.steer(path.bearing(car.x(), car.y(), car.heading(), car.speed()), "junction");
+        intent.steer(path.bearing(car), "junction");
         intent.limit(entrySpeed(arrival, exit), "junction");
         if (path.isTurningOnTheSpot()) {
             intent.limit(0, "junction");
             return;
         }
-        double toTurn = path.distanceToTurnOnTheSpot(car.x(), car.y(), car.heading());
+        double toTurn = path.distanceToTurnOnTheSpot(car);
         intent.stopWithin(toTurn, "junction");
         if (toTurn < CRAWL_BEFORE_TURNING) {
             // the last stretch before turning on the spot is crawled (faults 5 and 6 act here)

@@ -92,11 +92,11 @@ public final class MovingCar implements Vehicle, Steppable {
             path.turned(body.heading());
             limit = Math.min(limit, exit == lane.left() || exit == lane.opposite() ? U_TURN_SPEED : JUNCTION_SPEED);
             limit = path.isTurningOnTheSpot() ? 0
-                    : Math.min(limit, Dynamics.speedToStopWithin(path.distanceToTurnOnTheSpot(body.x(), body.y(), body.heading())));
-            bearing = path.bearing(body.x(), body.y(), body.heading(), body.speed());
+                    : Math.min(limit, Dynamics.speedToStopWithin(path.distanceToTurnOnTheSpot(this)));
+            bearing = path.bearing(this);
             double beyond = (body.x() - waypointX) * exit.dx() + (body.y() - waypointY) * exit.dy();
             if (beyond > finishBeyond || path.isFinished()
-                    || Math.hypot(body.x() - waypointX, body.y() - waypointY) > JunctionDriver.STRAYED) {
+                    || fartherThan(body.x() - waypointX, body.y() - waypointY, JunctionDriver.STRAYED)) {
                 crossing = false;
                 lane = exit;
             }
@@ -311,6 +311,16 @@ public final class MovingCar implements Vehicle, Steppable {
         }
         return least == Double.POSITIVE_INFINITY ? Dynamics.MAX_SPEED
                 : Math.min(Dynamics.MAX_SPEED, Dynamics.speedToStopWithin(least));
+    }
+
+    /** {@code Math.hypot(dx, dy) > limit}, told by the squares unless within a hair of the limit (hypot is slow). */
+    private static boolean fartherThan(double dx, double dy, double limit) {
+        double squared = dx * dx + dy * dy;
+        double limitSquared = limit * limit;
+        if (Math.abs(squared - limitSquared) > 1e-9 * limitSquared) {
+            return squared > limitSquared;
+        }
+        return Math.hypot(dx, dy) > limit;
     }
 
     private boolean hasLeftTheRoads() {

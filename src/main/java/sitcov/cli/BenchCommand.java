@@ -1,6 +1,8 @@
 package sitcov.cli;
 
 import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -31,6 +33,8 @@ final class BenchCommand implements Command {
     static final int DEFAULT_JUDGED = 40;
     static final int MAX_JUDGED = 10_000;
     private static final long WARM_UP_SEED = 1_000_000L;
+    static final int DEFAULT_ROUNDS = 7;
+    static final int MAX_ROUNDS = 1000;
 
     /** Keeps the JIT from dropping work whose result nobody reads. */
     private static volatile long sink;
@@ -43,18 +47,38 @@ final class BenchCommand implements Command {
     @Override
     public String synopsis() {
         return "[--maps K (default: " + DEFAULT_MAPS + ")] [--candidates N (default: " + DEFAULT_CANDIDATES + ")]"
-                + " [--judged J (default: " + DEFAULT_JUDGED + ")]";
+                + " [--judged J (default: " + DEFAULT_JUDGED + ")] | --vs BUILD [--rounds R (default: " + DEFAULT_ROUNDS + ")]";
     }
 
     @Override
     public String summary() {
-        return "measure ticks, runs, candidate maps and judged maps per second (one thread, after a warm-up)";
+        return "measure ticks, runs, candidate maps and judged maps per second (one thread, after a warm-up);"
+                + " --vs: this build against another build's classes, alternated in one JVM";
     }
 
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
-        Options options = Options.parse(name(), args, Set.of("--maps", "--candidates", "--judged"), Set.of());
+        Options options = Options.parse(name(), args, Set.of("--maps", "--candidates", "--judged", "--vs", "--rounds"),
+                Set.of());
         options.noPositional();
+        if (options.value("--vs").isPresent()) {
+            if (options.value("--maps").isPresent() || options.value("--candidates").isPresent()
+                    || options.value("--judged").isPresent()) {
+                throw new UsageException("bench: --vs compares two builds on fixed work; leave out --maps, --candidates"
+                        + " and --judged (or leave out --vs).");
+            }
+            Path other = Path.of(options.value("--vs").get());
+            if (!Files.isDirectory(other) && !Files.isRegularFile(other)) {
+                throw new UsageException("bench: --vs " + other + " does not exist; give another build's classes folder"
+                        + " (e.g. /tmp/before/target/classes) or jar.");
+            }
+            int rounds = options.count("--rounds", 1, MAX_ROUNDS).orElse(DEFAULT_ROUNDS);
+            BuildComparison.of(other).run(rounds, out, err);
+            return ExitCode.OK;
+        }
+        if (options.value("--rounds").isPresent()) {
+            throw new UsageException("bench: --rounds goes with --vs BUILD.");
+        }
         int maps = options.count("--maps", 1, MAX_MAPS).orElse(DEFAULT_MAPS);
         int candidates = options.count("--candidates", 1, MAX_CANDIDATES).orElse(DEFAULT_CANDIDATES);
         int judged = options.count("--judged", 1, MAX_JUDGED).orElse(DEFAULT_JUDGED);

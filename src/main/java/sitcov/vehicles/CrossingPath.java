@@ -146,9 +146,12 @@ final class CrossingPath {
      * heading, so the axle is steered. The nearest path point only moves on.
      */
     double bearing(Vehicle car) {
-        double px = car.x() - axle * car.headingDx();
-        double py = car.y() - axle * car.headingDy();
-        return axleBearing(px, py, car.speed());
+        return bearing(car.x(), car.y(), car.headingDx(), car.headingDy(), car.speed());
+    }
+
+    /** The same for a front at ({@code x}, {@code y}) with the unit heading vector ({@code hx}, {@code hy}). */
+    double bearing(double x, double y, double hx, double hy, double speed) {
+        return axleBearing(x - axle * hx, y - axle * hy, speed);
     }
 
     private double axleBearing(double x, double y, double speed) {
@@ -205,8 +208,12 @@ final class CrossingPath {
 
     /** Distance from the car's rear axle to the next turn on the spot ahead, or infinity. */
     double distanceToTurnOnTheSpot(Vehicle car) {
-        double px = car.x() - axle * car.headingDx();
-        double py = car.y() - axle * car.headingDy();
+        return distanceToTurnOnTheSpot(car.x(), car.y(), car.headingDx(), car.headingDy());
+    }
+
+    double distanceToTurnOnTheSpot(double x, double y, double hx, double hy) {
+        double px = x - axle * hx;
+        double py = y - axle * hy;
         for (int i = progress; i + 1 < onTheSpot.length; i++) {
             if (onTheSpot[i + 1]) {
                 return Math.hypot(xs[i] - px, ys[i] - py);

@@ -38,4 +38,37 @@ class BenchCommandTest {
         assertTrue(m.find(), measure + " missing from:\n" + out);
         return Double.parseDouble(m.group(1));
     }
+
+    @Test
+    void comparingThisBuildWithItselfAlternatesBothKindsOfWorkAndPrintsTheirRatios() throws Exception {
+        java.nio.file.Path own = java.nio.file.Path.of(BuildComparison.class.getProtectionDomain().getCodeSource()
+                .getLocation().toURI());
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        BuildComparison.of(own).run(3, 2, 1, new java.io.PrintStream(out, true, java.nio.charset.StandardCharsets.UTF_8),
+                new java.io.PrintStream(java.io.OutputStream.nullOutputStream()));
+        String printed = out.toString(java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(printed.contains("3 alternated rounds"), printed);
+        assertTrue(printed.contains("fault-free runs of maps 1..2:"), printed);
+        assertTrue(printed.contains("maps 1..1 judged with the PAPER faults"), printed);
+        Matcher ratio = Pattern.compile("this / other (\\d+\\.\\d+) \\(min (\\d+\\.\\d+), max (\\d+\\.\\d+)\\)")
+                .matcher(printed);
+        for (int kind = 0; kind < 2; kind++) {
+            assertTrue(ratio.find(), printed);
+            double median = Double.parseDouble(ratio.group(1));
+            assertTrue(Double.parseDouble(ratio.group(2)) <= median && median <= Double.parseDouble(ratio.group(3)), printed);
+        }
+    }
+
+    @Test
+    void aComparisonWithSomethingThatIsNotABuildIsRefusedWithTheFix() {
+        CliRunner missing = CliRunner.run("bench", "--vs", "no/such/build");
+        assertEquals(2, missing.exitCode());
+        assertTrue(missing.err().contains("--vs no/such/build does not exist; give another build's classes folder"), missing.err());
+        CliRunner mixed = CliRunner.run("bench", "--vs", ".", "--maps", "3");
+        assertEquals(2, mixed.exitCode());
+        assertTrue(mixed.err().contains("leave out --maps"), mixed.err());
+        CliRunner notABuild = CliRunner.run("bench", "--vs", "experiments");
+        assertEquals(2, notABuild.exitCode());
+        assertTrue(notABuild.err().contains("is not a sitcov build this bench can drive"), notABuild.err());
+    }
 }

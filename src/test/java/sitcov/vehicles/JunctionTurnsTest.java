@@ -62,9 +62,9 @@ class JunctionTurnsTest {
                 : exit == arrival.right() ? JunctionDriver.RIGHT_TURN_SPEED : exit == arrival.left() ? JunctionDriver.LEFT_TURN_SPEED : JunctionDriver.U_TURN_SPEED;
         for (int tick = 0; tick < 200; tick++) {
             path.turned(body.heading());
-            double bearing = path.bearing(body.x(), body.y(), body.heading(), body.speed());
+            double bearing = path.bearing(body.x(), body.y(), body.headingDx(), body.headingDy(), body.speed());
             double limit = path.isTurningOnTheSpot() ? 0
-                    : Math.min(speed, Dynamics.speedToStopWithin(path.distanceToTurnOnTheSpot(body.x(), body.y(), body.heading())));
+                    : Math.min(speed, Dynamics.speedToStopWithin(path.distanceToTurnOnTheSpot(body.x(), body.y(), body.headingDx(), body.headingDy())));
             body.approachSpeed(limit);
             body.turnTowards(bearing, Dynamics.MAX_TURN);
             body.move();

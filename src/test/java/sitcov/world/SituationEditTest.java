@@ -57,4 +57,22 @@ class SituationEditTest {
         assertEquals(edited, read);
         assertEquals("move-target:-2.00", new SituationEdit.MoveTarget(-2).text());
     }
+
+    @Test
+    void editsReachAStartTwoHundredMetresFromTheTargetThatNoRandomMapOfAMillionHad() {
+        // issue 16's question: is a start 200 m or more from the Target possible in a 200 x 100 m world?
+        // Map 603's roads reach near opposite corners; sliding its start 40 m back and its Target 8 m on
+        // along their roads puts them 201.5 m apart, every rule of the world kept
+        WorldMap map = MapGenerator.generate(603);
+        WorldMap edited = new SituationEdit.MoveStart(-40).apply(map)
+                .flatMap(new SituationEdit.MoveTarget(8)::apply).orElseThrow();
+        assertEquals(List.of(), Invariants.violations(edited));
+        Vec2 start = edited.layout().carStart().orElseThrow().position();
+        Vec2 target = edited.layout().target().orElseThrow().position();
+        double dx = start.x() - target.x();
+        double dy = start.y() - target.y();
+        assertTrue(Math.sqrt(dx * dx + dy * dy) >= 200, "start " + start + ", Target " + target);
+        Vec2 before = map.layout().carStart().orElseThrow().position();
+        assertTrue(before.distanceTo(map.layout().target().orElseThrow().position()) < 200, "the unedited map is not");
+    }
 }

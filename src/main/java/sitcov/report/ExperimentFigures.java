@@ -75,35 +75,64 @@ final class ExperimentFigures {
         Graphics2D g = graphics(image);
         title(g, String.format(Locale.ROOT, "Situation coverage (cells of %d) against effort (%s, %d replications)",
                 config.grid().cells(), config.name(), summary.results().size()));
-        curves(g, config, summary, 80, "against candidate maps drawn", "candidates", p -> p.candidates());
-        curves(g, config, summary, 560, "against simulated ticks", "ticks (fault-free and faulty runs)", p -> p.ticks());
+        int cut = curves(g, config, summary, 80, "against candidate maps drawn", "candidates", p -> p.candidates(), true);
+        curves(g, config, summary, 560, "against simulated ticks", "ticks (fault-free and faulty runs)", p -> p.ticks(), false);
         Chart.legendRow(g, 80, 400, config.drivers().toArray(String[]::new), Chart.drivers(config.drivers().size()));
-        note(g, "one line per driver and replication; a driver that runs every candidate draws far fewer");
+        note(g, "one line per driver and replication; a driver that runs every candidate draws far fewer"
+                + (cut == 0 ? "" : "; " + cut + (cut == 1 ? " line goes" : " lines go") + " on past the candidates axis"));
         g.dispose();
         return image;
     }
 
-    private static void curves(Graphics2D g, ExperimentConfig config, Summary summary, int left, String title,
-                               String xLabel, ToDoubleFunction<CurvePoint> x) {
-        double maxX = 0;
+    /**
+     * One panel of coverage curves; returns how many lines were cut at the axis. With {@code cutOutliers},
+     * a few lines that run on far beyond the rest (a search that spent its candidate limit) are cut
+     * where nine in ten lines have ended, so that the rest do not huddle against the left edge.
+     */
+    private static int curves(Graphics2D g, ExperimentConfig config, Summary summary, int left, String title,
+                              String xLabel, ToDoubleFunction<CurvePoint> x, boolean cutOutliers) {
         double maxY = 0;
+        List<Double> ends = new java.util.ArrayList<>();
         for (ReplicationResult r : summary.results()) {
             for (DriverRun d : r.drivers()) {
+                double end = 0;
                 for (CurvePoint p : CurvePoint.of(r.replication(), d)) {
-                    maxX = Math.max(maxX, x.applyAsDouble(p));
+                    end = Math.max(end, x.applyAsDouble(p));
                     maxY = Math.max(maxY, p.cellsCovered());
                 }
+                ends.add(end);
             }
+        }
+        java.util.Collections.sort(ends);
+        double maxX = ends.isEmpty() ? 0 : ends.get(ends.size() - 1);
+        if (cutOutliers && !ends.isEmpty()) {
+            double mostEnded = ends.get((int) Math.ceil(0.9 * ends.size()) - 1);
+            maxX = mostEnded > 0 && mostEnded < maxX / 2 ? mostEnded : maxX;
         }
         Chart chart = new Chart(g, left, 80, 380, 260, maxX, maxY);
         chart.axes(title, xLabel, "cells covered");
+        int cut = 0;
         for (ReplicationResult r : summary.results()) {
             for (DriverRun d : r.drivers()) {
                 List<CurvePoint> pts = CurvePoint.of(r.replication(), d);
-                chart.line(pts.stream().mapToDouble(x).toArray(), pts.stream().mapToDouble(CurvePoint::cellsCovered).toArray(),
-                        Chart.driver(config.driverIndex(d.driver())), 1.5f);
+                double[] xs = pts.stream().mapToDouble(x).toArray();
+                double[] ys = pts.stream().mapToDouble(CurvePoint::cellsCovered).toArray();
+                int within = 0;
+                while (within < xs.length && xs[within] <= maxX) {
+                    within++;
+                }
+                if (within < xs.length) {
+                    cut++;
+                    // the line as far as the axis goes: the coverage it had there
+                    xs = java.util.Arrays.copyOf(xs, within + 1);
+                    ys = java.util.Arrays.copyOf(ys, within + 1);
+                    xs[within] = maxX;
+                    ys[within] = within > 0 ? ys[within - 1] : 0;
+                }
+                chart.line(xs, ys, Chart.driver(config.driverIndex(d.driver())), 1.5f);
             }
         }
+        return cut;
     }
 
     /** Coverage against each driver's own wall-clock time, read from the journal's timings. */

@@ -119,10 +119,14 @@ final class StatsFigures {
             Chart chart = new Chart(g, 70 + m * (panel + 12), 80, panel - 60, 260, drivers.size(), Chart.nice(max), 0);
             chart.axes(STRIPS[m].label(), "", "");
             g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
+            // names wider than a driver's strip take two rows, every other one lower, so none runs into the next
+            int slot = chart.px(1) - chart.px(0);
+            boolean stagger = drivers.stream().anyMatch(n -> g.getFontMetrics().stringWidth(n) + 4 > slot);
             for (int d = 0; d < drivers.size(); d++) {
                 String name = drivers.get(d);
                 g.setColor(Color.DARK_GRAY);
-                g.drawString(name, chart.px(d + 0.5) - g.getFontMetrics().stringWidth(name) / 2, chart.py(0) + 15);
+                g.drawString(name, chart.px(d + 0.5) - g.getFontMetrics().stringWidth(name) / 2,
+                        chart.py(0) + 15 + (stagger && d % 2 == 1 ? 12 : 0));
             }
             for (int d = 0; d < drivers.size(); d++) {
                 g.setColor(Chart.driver(d));

@@ -1,8 +1,10 @@
 package sitcov.report;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.FaultVerdict;
@@ -28,13 +30,27 @@ final class ReplayGallery {
 
     static void write(Path folder, ExperimentConfig config, List<MapRun> inOrder) throws IOException {
         List<Fault> faults = config.faultList();
+        List<Runnable> pictures = new ArrayList<>();
         for (int f = 0; f < faults.size(); f++) {
             for (MapRun run : inOrder) {
                 if (run.faults().get(f).found(false)) {
-                    draw(folder, config, run, faults.get(f));
+                    Fault fault = faults.get(f);
+                    pictures.add(() -> {
+                        try {
+                            draw(folder, config, run, fault);
+                        } catch (IOException e) {
+                            throw new UncheckedIOException(e);
+                        }
+                    });
                     break;
                 }
             }
+        }
+        // each picture is its own file, judged and drawn alone: drawing them side by side changes no byte
+        try {
+            pictures.parallelStream().forEach(Runnable::run);
+        } catch (UncheckedIOException e) {
+            throw e.getCause();
         }
     }
 

@@ -13,6 +13,7 @@ import sitcov.world.Layout;
 import sitcov.world.ParkedCar;
 import sitcov.world.Road;
 import sitcov.world.Situations;
+import sitcov.world.StartPose;
 
 /**
  * The LIDAR on the straight road, sweeping from the east-bound lane centre (x = 40, y = 48.5)
@@ -103,6 +104,38 @@ class LidarTest {
         Lidar noGap = sweepFrom(95, twoRoads(100, onB));
         assertTrue(noGap.hits() > 0);
         assertEquals(12.5, nearestU(noGap), 0.5 + EPS);
+    }
+
+    @Test
+    void aLidarStandingStillSweepsAsAFreshOneWhenTrafficComesBetweenItsSweeps() {
+        // it remembers its parked cars' rays while it stands still: traffic arriving in front must still count
+        Scene scene = new Scene(Situations.withoutTraffic(Situations.straight(List.of(Situations.parkedInEastboundLane(0, 63)))),
+                new SimState(1));
+        Lidar standing = new Lidar(scene.network());
+        int before = standing.sweep(X, Y, Compass.EAST.bearing(), Compass.EAST, scene, null);
+        assertTrue(before > 0 && parkedHits(standing) == before, "the parked car alone, 20.5 m ahead, is seen");
+
+        // a moving car stands 5 to 10 m ahead in the same lane, between the sensor and the parked car
+        scene.addMovingCar(new MovingCar(1, scene, new StartPose(new Vec2(50, Y), Compass.EAST),
+                new java.util.SplittableRandom(1), new java.util.SplittableRandom(2)));
+        int after = standing.sweep(X, Y, Compass.EAST.bearing(), Compass.EAST, scene, null);
+        Lidar fresh = new Lidar(scene.network());
+        assertEquals(fresh.sweep(X, Y, Compass.EAST.bearing(), Compass.EAST, scene, null), after);
+        for (int i = 0; i < after; i++) {
+            assertEquals(fresh.u(i), standing.u(i), 0, "hit " + i);
+            assertEquals(fresh.v(i), standing.v(i), 0, "hit " + i);
+            assertEquals(fresh.isParkedCar(i), standing.isParkedCar(i), "hit " + i);
+        }
+        assertTrue(after > parkedHits(standing), "the moving car is hit");
+        assertTrue(parkedHits(standing) < before, "and hides part of the parked car");
+    }
+
+    private static int parkedHits(Lidar lidar) {
+        int parked = 0;
+        for (int i = 0; i < lidar.hits(); i++) {
+            parked += lidar.isParkedCar(i) ? 1 : 0;
+        }
+        return parked;
     }
 
     private static Lidar sweep(List<ParkedCar> parked) {

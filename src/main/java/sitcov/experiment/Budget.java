@@ -3,15 +3,16 @@ package sitcov.experiment;
 /**
  * What one driver may spend in a replication: {@code amount} of one measure (candidates drawn,
  * simulated ticks, or wall-clock nanoseconds), and never more than {@code candidateLimit} candidates.
+ * A later driver's amount is what the first driver spends, which it learns from {@code lead} as the
+ * first goes on ({@code amount} is then unused).
  */
-record Budget(StopReason measure, long amount, long candidateLimit) {
+record Budget(StopReason measure, long amount, long candidateLimit, Lead lead) {
     static Budget candidates(int n) {
-        return new Budget(StopReason.CANDIDATES, n, n);
+        return new Budget(StopReason.CANDIDATES, n, n, null);
     }
 
-    /** The budget of a later driver: what the first driver spent, in the experiment's kind of budget. */
-    static Budget after(BudgetKind kind, DriverSpend first, long firstNanos, int candidateLimit) {
-        return kind == BudgetKind.TICKS ? new Budget(StopReason.TICKS, first.ticks(), candidateLimit)
-                : new Budget(StopReason.WALL_CLOCK, firstNanos, candidateLimit);
+    /** The budget of a later driver: what the first driver spends, in the experiment's kind of budget. */
+    static Budget after(BudgetKind kind, Lead lead, int candidateLimit) {
+        return new Budget(kind == BudgetKind.TICKS ? StopReason.TICKS : StopReason.WALL_CLOCK, -1, candidateLimit, lead);
     }
 }

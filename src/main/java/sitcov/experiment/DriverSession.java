@@ -32,6 +32,8 @@ public final class DriverSession {
     private final Optional<Journal.Finished> finishedBefore;
     private final Driver self;
     private final Map<MapId, SharedMap> shared;
+    /** The lead this session feeds with its ticks as it spends them, when it is the replication's first driver. */
+    private final Lead leading;
     /** Wall time charged for maps another driver of the replication judged: as if this driver had run them. */
     private long creditedNanos;
     private int drawn;
@@ -44,8 +46,9 @@ public final class DriverSession {
     private int liveMaps;
 
     DriverSession(ExperimentRunner host, PlannedReplication replication, String driver, int driverIndex, Budget budget,
-                  Journal journal, Driver self, Map<MapId, SharedMap> shared) {
+                  Journal journal, Driver self, Map<MapId, SharedMap> shared, Lead leading) {
         this.shared = shared;
+        this.leading = leading;
         this.host = host;
         this.replication = replication.index();
         this.driver = driver;
@@ -75,9 +78,10 @@ public final class DriverSession {
             stop = budget.measure() == StopReason.CANDIDATES ? StopReason.CANDIDATES : StopReason.CANDIDATE_LIMIT;
             return false;
         }
+        Lead lead = budget.lead();
         boolean left = switch (budget.measure()) {
-            case TICKS -> ticks < budget.amount();
-            case WALL_CLOCK -> elapsedNanos() < budget.amount();
+            case TICKS -> lead != null ? lead.ticksLeft(ticks, host::checkHalt) : ticks < budget.amount();
+            case WALL_CLOCK -> lead != null ? lead.nanosLeft(elapsedNanos()) : elapsedNanos() < budget.amount();
             default -> true;
         };
         stop = left ? null : budget.measure();
@@ -199,7 +203,7 @@ public final class DriverSession {
             creditedNanos += judgedBefore.nanos() - nanos;
             nanos = judgedBefore.nanos();
         } else {
-            shared.put(id, new SharedMap(world, judged, nanos));
+            shared.putIfAbsent(id, new SharedMap(world, judged, nanos));
         }
         liveMapNanos += nanos;
         liveMaps++;
@@ -211,6 +215,9 @@ public final class DriverSession {
         mapsRun++;
         ticks += run.ticks();
         cells.add(run.cell());
+        if (leading != null) {
+            leading.spent(ticks);
+        }
     }
 
     /** Wall time this driver has spent; while replaying the journal, the time the journal recorded. */
@@ -227,10 +234,11 @@ public final class DriverSession {
 
     /** How much of its budget the driver has spent, 0..1. */
     public double budgetSpent() {
+        long amount = budget.lead() == null ? budget.amount() : budget.lead().soFar(budget.measure(), elapsedNanos());
         double s = switch (budget.measure()) {
-            case TICKS -> budget.amount() == 0 ? 1 : (double) ticks / budget.amount();
-            case WALL_CLOCK -> budget.amount() == 0 ? 1 : (double) elapsedNanos() / budget.amount();
-            default -> (double) drawn / budget.amount();
+            case TICKS -> amount == 0 ? 1 : (double) ticks / amount;
+            case WALL_CLOCK -> amount == 0 ? 1 : (double) elapsedNanos() / amount;
+            default -> (double) drawn / amount;
         };
         return Math.min(1, Math.max(0, s));
     }

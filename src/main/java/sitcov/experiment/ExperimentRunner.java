@@ -1,21 +1,23 @@
 package sitcov.experiment;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.LongSupplier;
 import sitcov.faults.Fault;
 
 /**
  * Runs an experiment's replications (those of one shard) in parallel and tells the listeners what
- * happens. Within a replication the drivers run in the preset's order: the first draws its
- * candidates, each later one gets the same budget. Each replication is seeded from the master seed
+ * happens. Within a replication the first driver draws its candidates and the later ones get
+ * the same budget, learnt from it ({@link Lead}): beside it under the ticks budget, after it under the
+ * wall-clock budget. Each replication is seeded from the master seed
  * alone, so under the ticks budget what is judged never depends on the thread count.
  */
 public final class ExperimentRunner {
@@ -56,11 +58,33 @@ public final class ExperimentRunner {
     public boolean run() {
         List<PlannedReplication> todo = replications();
         emit(new ExperimentEvent.Started(config, shard, todo, threads, journal.size()));
-        ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, Math.min(threads, todo.size())));
+        int drivers = config.drivers().size();
+        // under the ticks budget a replication's later drivers run beside its first, which changes no
+        // result and keeps every core busy however few replications a shard has; under the wall-clock
+        // budget they run after it, as in the paper, each with a core of its own
+        boolean beside = config.budget() == BudgetKind.TICKS;
+        ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, Math.min(threads, todo.size() * (beside ? drivers : 1))));
         try {
             List<Future<?>> futures = new ArrayList<>();
+            // a replication's drivers are queued one after another: its first is always taken up before the
+            // later ones that wait on it, so even one thread runs them all, in the preset's order
             for (PlannedReplication p : todo) {
-                futures.add(pool.submit(() -> runReplication(p)));
+                Lead lead = new Lead();
+                // drivers of a replication read the same candidates: a map two of them run is judged once
+                Map<MapId, DriverSession.SharedMap> shared = new ConcurrentHashMap<>();
+                AtomicInteger driversLeft = new AtomicInteger(drivers);
+                if (beside) {
+                    for (int d = 0; d < drivers; d++) {
+                        int driver = d;
+                        futures.add(pool.submit(() -> runDriver(p, driver, lead, shared, driversLeft)));
+                    }
+                } else {
+                    futures.add(pool.submit(() -> {
+                        for (int d = 0; d < drivers; d++) {
+                            runDriver(p, d, lead, shared, driversLeft);
+                        }
+                    }));
+                }
             }
             for (Future<?> f : futures) {
                 f.get();
@@ -89,26 +113,30 @@ public final class ExperimentRunner {
         halted = true;
     }
 
-    private void runReplication(PlannedReplication p) {
-        DriverSpend first = null;
-        long firstNanos = 0;
-        // drivers of a replication read the same candidates: a map two of them run is judged once
-        Map<MapId, DriverSession.SharedMap> shared = new HashMap<>();
-        for (int d = 0; d < config.drivers().size(); d++) {
-            String name = config.drivers().get(d);
-            Budget budget = d == 0 ? Budget.candidates(p.candidates())
-                    : Budget.after(config.budget(), first, firstNanos, config.candidateLimit());
-            Driver driver = drivers.create(name);
-            DriverSession session = new DriverSession(this, p, name, d, budget, journal, driver, shared);
+    /** One driver's share of a replication; the later drivers run beside the first, spending what it spends. */
+    private void runDriver(PlannedReplication p, int d, Lead lead, Map<MapId, DriverSession.SharedMap> shared,
+                           AtomicInteger driversLeft) {
+        String name = config.drivers().get(d);
+        Budget budget = d == 0 ? Budget.candidates(p.candidates()) : Budget.after(config.budget(), lead, config.candidateLimit());
+        Driver driver = drivers.create(name);
+        DriverSession session = new DriverSession(this, p, name, d, budget, journal, driver, shared, d == 0 ? lead : null);
+        Journal.Finished done;
+        try {
             driver.drive(session);
-            Journal.Finished done = session.finish();
-            emit(new ExperimentEvent.DriverDone(done.spend(), d, session.wasFinishedBefore(), done.driverNanos()));
+            done = session.finish();
+        } catch (RuntimeException | Error e) {
             if (d == 0) {
-                first = done.spend();
-                firstNanos = done.driverNanos();
+                lead.abandoned();
             }
+            throw e;
         }
-        emit(new ExperimentEvent.ReplicationDone(p.index()));
+        if (d == 0) {
+            lead.finished(done.spend().ticks(), done.driverNanos());
+        }
+        emit(new ExperimentEvent.DriverDone(done.spend(), d, session.wasFinishedBefore(), done.driverNanos()));
+        if (driversLeft.decrementAndGet() == 0) {
+            emit(new ExperimentEvent.ReplicationDone(p.index()));
+        }
     }
 
     ExperimentConfig config() {

@@ -8,7 +8,8 @@ import sitcov.geom.Vec2;
 
 /**
  * One change to a situation that a search makes (issue 16): the Target or the car's start moved along
- * its road, a parked car added, moved along its road or removed. An edit applies to a map and gives
+ * its road, the Target placed on any road, a parked car added, moved along its road or removed, the
+ * moving cars placed afresh from another seed. An edit applies to a map and gives
  * the edited map only if it keeps every rule of the world ({@link Invariants}); the map it gives is a
  * value like any other, written to a situation file to be replayed. Its {@link #text} names it, so
  * parent + edits is an identity.
@@ -54,6 +55,49 @@ public sealed interface SituationEdit {
         @Override
         public String text() {
             return String.format(Locale.ROOT, "move-start:%+.2f", by);
+        }
+    }
+
+    /** The Target placed at ({@code x}, {@code y}), on whichever road is there: it may leave its road for another. */
+    record PlaceTarget(double x, double y) implements SituationEdit {
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            Layout l = map.layout();
+            double px = Dimensions.rounded(x);
+            double py = Dimensions.rounded(y);
+            Road road = RoadNetwork.of(l).roadAt(px, py);
+            if (road == null) {
+                return Optional.empty();
+            }
+            return Optional.of(with(map, new Layout(l.seed(), l.roads(), l.junctions(), l.parkedCars(),
+                    Optional.of(new Target(new Vec2(px, py), road.id())), l.carStart(), l.junctionAttempts(),
+                    l.parkedCarsRequested(), l.omissions())));
+        }
+
+        @Override
+        public String text() {
+            return String.format(Locale.ROOT, "place-target:%.3f:%.3f", x, y);
+        }
+    }
+
+    /**
+     * The moving cars placed afresh, as the generator places them, from stream {@code seed} instead of
+     * the map's own: the same roads, parked cars, Target and start, other traffic.
+     */
+    record ReseedTraffic(long seed) implements SituationEdit {
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            Layout l = map.layout();
+            List<Omission> omissions = new ArrayList<>();
+            Placed<StartPose> moving = new Placement(RoadNetwork.of(l)).movingCars(
+                    new sitcov.engine.RandomStreams(seed).stream(MapGenerator.MOVING_CARS_STREAM), l.parkedCars(),
+                    l.carStart(), omissions);
+            return Optional.of(new WorldMap(l, moving.items(), moving.requested(), omissions));
+        }
+
+        @Override
+        public String text() {
+            return "reseed-traffic:" + seed;
         }
     }
 

@@ -75,4 +75,41 @@ class SituationEditTest {
         Vec2 before = map.layout().carStart().orElseThrow().position();
         assertTrue(before.distanceTo(map.layout().target().orElseThrow().position()) < 200, "the unedited map is not");
     }
+
+    @Test
+    void theTargetPlacedOnAnotherRoadKeepsTheRulesAndComesBackFromItsSituationFile() throws Exception {
+        Target before = MAP.layout().target().orElseThrow();
+        int placed = 0;
+        for (Road road : MAP.layout().roads()) {
+            if (road.id() == before.roadId()) {
+                continue;
+            }
+            // the middle of the road, in one of its lanes
+            Vec2 middle = road.point((road.from() + road.to()) / 2, road.centre() + 1.5);
+            var edited = new SituationEdit.PlaceTarget(middle.x(), middle.y()).apply(MAP);
+            if (edited.isEmpty()) {
+                continue; // a junction or a parked car there: the rules refuse it
+            }
+            placed++;
+            Target after = edited.get().layout().target().orElseThrow();
+            assertEquals(road.id(), after.roadId(), "the Target is on the road it was put on");
+            assertEquals(0, after.position().distanceTo(middle.x(), middle.y()), 0.001);
+            assertEquals(List.of(), Invariants.violations(edited.get()));
+            assertEquals(MAP.layout().carStart(), edited.get().layout().carStart(), "nothing else changed");
+            assertEquals(edited.get(), SituationFile.parse(List.of(SituationFile.format(edited.get()).split("\n")), "placed"));
+        }
+        assertTrue(placed > 0, "map 1 has another road with a free middle");
+        assertEquals(Optional.empty(), new SituationEdit.PlaceTarget(-50, -50).apply(MAP), "off every road");
+    }
+
+    @Test
+    void trafficReseededFromTheMapsOwnSeedIsItsOwnAndFromAnotherIsOther() {
+        WorldMap own = new SituationEdit.ReseedTraffic(MAP.seed()).apply(MAP).orElseThrow();
+        assertEquals(MAP, own, "the generator places a map's traffic from its own seed");
+        WorldMap other = new SituationEdit.ReseedTraffic(MAP.seed() + 1).apply(MAP).orElseThrow();
+        assertTrue(!other.movingCars().equals(MAP.movingCars()), "another seed, other traffic");
+        assertEquals(MAP.layout(), other.layout(), "the same roads, parked cars, Target and start");
+        assertEquals(List.of(), Invariants.violations(other));
+        assertEquals("reseed-traffic:2", new SituationEdit.ReseedTraffic(2).text());
+    }
 }

@@ -131,9 +131,40 @@ final class CoverageSearchDriver implements Driver {
                 yield alongX ? new SituationEdit.AddParkedCar(target.x() + sign * wanted, target.y())
                         : new SituationEdit.AddParkedCar(target.x(), target.y() + sign * wanted);
             }
-            case START_TO_TARGET -> new SituationEdit.MoveStart(sign * (10 + choose.nextDouble() * 50));
+            case START_TO_TARGET -> choose.nextBoolean() ? targetAtDistance(layout, wanted, choose)
+                    .orElseGet(() -> new SituationEdit.MoveStart(sign * (10 + choose.nextDouble() * 50)))
+                    : new SituationEdit.MoveStart(sign * (10 + choose.nextDouble() * 50));
             case PREVIOUS_JUNCTION_TO_TARGET -> new SituationEdit.MoveTarget(sign * (2 + choose.nextDouble() * 18));
         };
+    }
+
+    /**
+     * The Target placed in a lane of a road drawn at random, {@code wanted} metres from the car's
+     * start, where that road's lane passes at that distance (a root of |lane(t) − start| = wanted).
+     */
+    private static Optional<SituationEdit> targetAtDistance(Layout layout, double wanted, RandomGenerator choose) {
+        if (layout.carStart().isEmpty() || layout.roads().isEmpty()) {
+            return Optional.empty();
+        }
+        var start = layout.carStart().get().position();
+        var road = layout.roads().get(choose.nextInt(layout.roads().size()));
+        double across = road.centre() + (choose.nextBoolean() ? 1.5 : -1.5);
+        var origin = road.point(0, across);
+        double ex = road.isNorthSouth() ? 0 : 1;
+        double ey = road.isNorthSouth() ? 1 : 0;
+        double dx = origin.x() - start.x();
+        double dy = origin.y() - start.y();
+        double along = dx * ex + dy * ey;
+        double discriminant = along * along - (dx * dx + dy * dy - wanted * wanted);
+        if (discriminant < 0) {
+            return Optional.empty();
+        }
+        double t = -along + (choose.nextBoolean() ? 1 : -1) * Math.sqrt(discriminant);
+        if (t < road.from() || t > road.to()) {
+            return Optional.empty();
+        }
+        var p = road.point(t, across);
+        return Optional.of(new SituationEdit.PlaceTarget(p.x(), p.y()));
     }
 
     private static SituationEdit randomEdit(Layout layout, RandomGenerator choose) {

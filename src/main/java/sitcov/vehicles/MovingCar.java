@@ -32,7 +32,6 @@ public final class MovingCar implements Vehicle, Steppable {
     static final double LOOKAHEAD = 5;
     static final double GAP = 2;
     /** Vehicles further than this (squared, metres) cannot matter to keeping distance this tick. */
-    private static final double FOLLOW_RANGE_SQ = 46 * 46;
     /** Ticks standing still after which the driver stops waiting for other standing moving cars. */
     static final int IMPATIENCE = 40;
     /**
@@ -110,7 +109,7 @@ public final class MovingCar implements Vehicle, Steppable {
                 }
             }
         }
-        limit = Math.min(limit, keepDistance(stoppedFor > IMPATIENCE));
+        limit = Math.min(limit, Following.limit(scene, this, clearance, stoppedFor > IMPATIENCE));
         stoppedFor = body.speed() < 0.01 ? stoppedFor + 1 : 0;
         releaseJunctionIfLeft();
         if (clearance.anyoneNear(scene, this)
@@ -254,63 +253,6 @@ public final class MovingCar implements Vehicle, Steppable {
         double along = road.along(body.x(), body.y()) + Lanes.forwardSign(lane) * LOOKAHEAD;
         Vec2 aim = road.point(along, across);
         return Bearing.between(body.x(), body.y(), aim.x(), aim.y());
-    }
-
-    /**
-     * Keeps a stopping distance to any vehicle in its path (ground truth). After waiting long, an
-     * impatient driver stops heeding other standing moving cars (their mishaps are not the system
-     * under test's), which breaks gridlock; it always heeds the autonomous car.
-     */
-    private double keepDistance(boolean impatient) {
-        double fx = body.headingDx();
-        double fy = body.headingDy();
-        // the speed to stop within a room grows with the room: the least room sets the limit
-        double least = Double.POSITIVE_INFINITY;
-        // the one pass over the traffic a step makes: it also tells the clearance check who is near
-        clearance.clearNear();
-        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
-            Vehicle other = scene.vehicles().get(each);
-            if (other == this || !other.isActive()) {
-                continue;
-            }
-            double ox = other.x() - body.x();
-            double oy = other.y() - body.y();
-            double distanceSq = ox * ox + oy * oy;
-            clearance.vehicleAt(each, distanceSq);
-            if (distanceSq > FOLLOW_RANGE_SQ || (impatient && other.speed() == 0 && other.id() != AutonomousCar.ID)) {
-                continue;
-            }
-            // the other's centre lies within half its length of its anchor: an anchor that far behind
-            // leaves the centre behind too, and the test below would skip it (saves the trigonometry)
-            if (ox * fx + oy * fy < -other.length() / 2 - 1e-9) {
-                continue;
-            }
-            double halfL = other.length() / 2;
-            double cx = other.x() - halfL * other.headingDx() - body.x();
-            double cy = other.y() - halfL * other.headingDy() - body.y();
-            double u = cx * fx + cy * fy;
-            double v = cx * fy - cy * fx;
-            double corridor = 1.3;
-            // the other's extent across is at most its half length plus half width: a car beyond
-            // that is out of the path whatever its heading (saves the trigonometry)
-            if (u < 0 || u > 40 || Math.abs(v) > halfL + other.width() / 2 + corridor) {
-                continue;
-            }
-            double delta = other.heading() - body.heading();
-            double cos = Bearing.cos(delta);
-            double sin = Bearing.sin(delta);
-            double extentU = Math.abs(cos) * halfL + Math.abs(sin) * other.width() / 2;
-            double extentV = Math.abs(sin) * halfL + Math.abs(cos) * other.width() / 2;
-            if (u < 0 || u > 40 || Math.abs(v) > extentV + corridor) {
-                continue;
-            }
-            double gap = u - extentU;
-            double lead = other.speed() * cos;
-            double room = lead >= 0 ? gap + Dynamics.stoppingDistance(lead) - lead - GAP : gap - GAP + 4 * lead;
-            least = Math.min(least, room);
-        }
-        return least == Double.POSITIVE_INFINITY ? Dynamics.MAX_SPEED
-                : Math.min(Dynamics.MAX_SPEED, Dynamics.speedToStopWithin(least));
     }
 
     /** {@code Math.hypot(dx, dy) > limit}, told by the squares unless within a hair of the limit (hypot is slow). */

@@ -31,9 +31,8 @@ public sealed interface SituationEdit {
         @Override
         public Optional<WorldMap> edit(WorldMap map) {
             Layout l = map.layout();
-            return l.target().flatMap(t -> road(l, t.roadId()).map(road -> with(map, new Layout(l.seed(), l.roads(),
-                    l.junctions(), l.parkedCars(), Optional.of(new Target(slide(road, t.position(), by), t.roadId())),
-                    l.carStart(), l.junctionAttempts(), l.parkedCarsRequested(), l.omissions()))));
+            return l.target().flatMap(t -> road(l, t.roadId()).map(road -> with(map,
+                    targeted(l, new Target(slide(road, t.position(), by), t.roadId())))));
         }
 
         @Override
@@ -69,9 +68,7 @@ public sealed interface SituationEdit {
             if (road == null) {
                 return Optional.empty();
             }
-            return Optional.of(with(map, new Layout(l.seed(), l.roads(), l.junctions(), l.parkedCars(),
-                    Optional.of(new Target(new Vec2(px, py), road.id())), l.carStart(), l.junctionAttempts(),
-                    l.parkedCarsRequested(), l.omissions())));
+            return Optional.of(with(map, targeted(l, new Target(new Vec2(px, py), road.id()))));
         }
 
         @Override
@@ -175,6 +172,11 @@ public sealed interface SituationEdit {
     private static Vec2 slide(Road road, Vec2 p, double by) {
         Vec2 moved = road.point(road.along(p.x(), p.y()) + by, road.across(p.x(), p.y()));
         return new Vec2(Dimensions.rounded(moved.x()), Dimensions.rounded(moved.y()));
+    }
+
+    private static Layout targeted(Layout l, Target target) {
+        return new Layout(l.seed(), l.roads(), l.junctions(), l.parkedCars(), Optional.of(target), l.carStart(),
+                l.junctionAttempts(), l.parkedCarsRequested(), l.omissions());
     }
 
     private static Layout parked(Layout l, List<ParkedCar> cars) {

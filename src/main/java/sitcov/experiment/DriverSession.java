@@ -80,8 +80,8 @@ public final class DriverSession {
         }
         Lead lead = budget.lead();
         boolean left = switch (budget.measure()) {
-            case TICKS -> lead != null ? lead.ticksLeft(ticks, host::checkHalt) : ticks < budget.amount();
-            case WALL_CLOCK -> lead != null ? lead.nanosLeft(elapsedNanos()) : elapsedNanos() < budget.amount();
+            case TICKS -> lead.ticksLeft(ticks, host::checkHalt);
+            case WALL_CLOCK -> lead.nanosLeft(elapsedNanos());
             default -> true;
         };
         stop = left ? null : budget.measure();

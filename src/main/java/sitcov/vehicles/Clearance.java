@@ -12,7 +12,7 @@ final class Clearance {
     /** Anything whose anchor is further than this (squared, metres) is not looked at. */
     private static final double NEAR_SQ = 12 * 12;
 
-    /** Who {@link #anyoneNear} found near, in scene order: vehicles, then parked cars. */
+    /** Who is near, in scene order: the vehicles {@link #vehicleAt} noted, the parked cars {@link #anyoneNear} found. */
     private int[] nearVehicles = new int[16];
     private int[] nearParked = new int[16];
     private int vehiclesNear;

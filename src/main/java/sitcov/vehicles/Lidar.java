@@ -31,14 +31,12 @@ final class Lidar {
     /** Four lanes, and the heading fault 18 sweeps along. */
     private final RayFan.Cache fans = new RayFan.Cache(6);
 
-    /** What the last full sweep looked at: a sweep from the same place over the same things sees the same. */
-    private final Box[] sweptObjects = new Box[MAX_OBJECTS];
-    private final boolean[] sweptParked = new boolean[MAX_OBJECTS];
-    private int sweptCount = -1;
-    private double sweptX;
-    private double sweptY;
-    private double sweptBearing;
-    private Compass sweptLane;
+    /**
+     * What the last full sweep looked at, and its hits, still in the buffers: parked cars never move
+     * and a vehicle's footprint is a new object once it has moved, so a sweep from the same place, along
+     * the same bearing and frame, over the same objects in the same order, sees the same.
+     */
+    private final Snapshot swept = new Snapshot();
     private int sweptHits;
 
     /**
@@ -48,11 +46,7 @@ final class Lidar {
      */
     private final double[] parkedBest = new double[RAYS];
     private final boolean[] parkedOnRoad = new boolean[RAYS];
-    private final Box[] parkedSwept = new Box[MAX_OBJECTS];
-    private int parkedCount = -1;
-    private double parkedX;
-    private double parkedY;
-    private double parkedBearing;
+    private final Snapshot parkedSwept = new Snapshot();
 
     private final double[] best = new double[RAYS];
     private final boolean[] byVehicle = new boolean[RAYS];
@@ -109,7 +103,7 @@ final class Lidar {
             // moving cars matter to this sensor only as what hides parked cars
             return 0;
         }
-        if (sweepsAsBefore(x, y, centreBearing, lane, n)) {
+        if (swept.matches(x, y, centreBearing, lane, objects, objectParked, n)) {
             hits = sweptHits;
             return hits;
         }
@@ -120,7 +114,8 @@ final class Lidar {
         }
         RayFan fan = fans.fan(RayFan.Form.FROM_THE_RIGHT, centreBearing, RAYS, ARC / 2, ANGULAR_STEP);
         roadReach.gather(x, y, RANGE);
-        if (!parkedSweptAsBefore(x, y, centreBearing, parked)) {
+        // the parked cars' rays are the same in any frame: the frame is left out of their snapshot
+        if (!parkedSwept.matches(x, y, centreBearing, null, objects, objectParked, parked)) {
             sweepParked(x, y, centreBearing, parked, fan);
         }
         System.arraycopy(parkedBest, 0, best, 0, RAYS);
@@ -153,7 +148,8 @@ final class Lidar {
                 hits++;
             }
         }
-        remember(x, y, centreBearing, lane, n);
+        swept.take(x, y, centreBearing, lane, objects, objectParked, n);
+        sweptHits = hits;
         return hits;
     }
 
@@ -181,53 +177,7 @@ final class Lidar {
             parkedOnRoad[ray] = !Double.isNaN(parkedBest[ray])
                     && roadReach.reaches(x, y, fan.dx(ray), fan.dy(ray), parkedBest[ray]);
         }
-        System.arraycopy(objects, 0, parkedSwept, 0, parked);
-        parkedCount = parked;
-        parkedX = x;
-        parkedY = y;
-        parkedBearing = centreBearing;
-    }
-
-    private boolean parkedSweptAsBefore(double x, double y, double centreBearing, int parked) {
-        if (parked != parkedCount || Double.compare(x, parkedX) != 0 || Double.compare(y, parkedY) != 0
-                || Double.compare(centreBearing, parkedBearing) != 0) {
-            return false;
-        }
-        for (int k = 0; k < parked; k++) {
-            if (objects[k] != parkedSwept[k]) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /**
-     * Whether this sweep has the last full sweep's place, bearing, frame and objects: parked cars
-     * never move and a vehicle's footprint is a new object once it has moved, so the same objects
-     * in the same order give the same hits, still in the buffers.
-     */
-    private boolean sweepsAsBefore(double x, double y, double centreBearing, Compass lane, int n) {
-        if (n != sweptCount || lane != sweptLane || Double.compare(x, sweptX) != 0 || Double.compare(y, sweptY) != 0
-                || Double.compare(centreBearing, sweptBearing) != 0) {
-            return false;
-        }
-        for (int k = 0; k < n; k++) {
-            if (objects[k] != sweptObjects[k] || objectParked[k] != sweptParked[k]) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private void remember(double x, double y, double centreBearing, Compass lane, int n) {
-        System.arraycopy(objects, 0, sweptObjects, 0, n);
-        System.arraycopy(objectParked, 0, sweptParked, 0, n);
-        sweptCount = n;
-        sweptX = x;
-        sweptY = y;
-        sweptBearing = centreBearing;
-        sweptLane = lane;
-        sweptHits = hits;
+        parkedSwept.take(x, y, centreBearing, null, objects, objectParked, parked);
     }
 
     /**
@@ -291,5 +241,40 @@ final class Lidar {
         double cx = body.centreX() - x;
         double cy = body.centreY() - y;
         return cx * cx + cy * cy;
+    }
+
+    /** Where a sweep was made from and what it looked at, object by object (by identity). */
+    private static final class Snapshot {
+        private final Box[] objects = new Box[MAX_OBJECTS];
+        private final boolean[] parked = new boolean[MAX_OBJECTS];
+        private int count = -1;
+        private double x;
+        private double y;
+        private double bearing;
+        private Compass frame;
+
+        boolean matches(double atX, double atY, double along, Compass inFrame, Box[] seen, boolean[] seenParked, int n) {
+            // places bit for bit (Double.compare tells −0 from 0): a sweep is reused only where it is certainly the same
+            if (n != count || inFrame != frame || Double.compare(atX, x) != 0 || Double.compare(atY, y) != 0
+                    || Double.compare(along, bearing) != 0) {
+                return false;
+            }
+            for (int k = 0; k < n; k++) {
+                if (seen[k] != objects[k] || seenParked[k] != parked[k]) {
+                    return false;
+                }
+            }
+            return true;
+        }
+
+        void take(double atX, double atY, double along, Compass inFrame, Box[] seen, boolean[] seenParked, int n) {
+            System.arraycopy(seen, 0, objects, 0, n);
+            System.arraycopy(seenParked, 0, parked, 0, n);
+            count = n;
+            x = atX;
+            y = atY;
+            bearing = along;
+            frame = inFrame;
+        }
     }
 }

@@ -1,7 +1,6 @@
 package sitcov.vehicles;
 
 import java.util.List;
-import sitcov.geom.Bearing;
 import sitcov.geom.Compass;
 import sitcov.geom.Rays;
 import sitcov.geom.Rect;

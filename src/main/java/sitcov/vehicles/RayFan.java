@@ -23,7 +23,6 @@ final class RayFan {
     private final double first;
     private final double last;
     private final double step;
-    private final double[] offsets;
     private final double[] dx;
     private final double[] dy;
     private final double[] slope;
@@ -42,7 +41,6 @@ final class RayFan {
                 count++;
             }
         }
-        offsets = new double[count];
         dx = new double[count];
         dy = new double[count];
         slope = new double[count];
@@ -53,10 +51,8 @@ final class RayFan {
             double degrees;
             if (form == Form.FROM_THE_RIGHT) {
                 degrees = bearing - last + k * step;
-                offsets[k] = degrees - bearing;
             } else {
                 degrees = bearing + i;
-                offsets[k] = i;
                 i -= step;
             }
             double r = Math.toRadians(degrees);
@@ -70,12 +66,7 @@ final class RayFan {
     }
 
     int size() {
-        return offsets.length;
-    }
-
-    /** Degrees left of the bearing. */
-    double offset(int ray) {
-        return offsets[ray];
+        return dx.length;
     }
 
     /** The ray's sideways run per metre ahead, left positive, relative to the fan's bearing; NaN square to it or behind. */

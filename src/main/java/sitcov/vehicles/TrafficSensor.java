@@ -103,9 +103,10 @@ final class TrafficSensor {
         if (distance <= ALL_ROUND) {
             return true;
         }
-        double half = distance <= NEAR_RANGE ? 90 : FIELD / 2;
+        boolean near = distance <= NEAR_RANGE;
+        double half = near ? 90 : FIELD / 2;
+        double edge = near ? 0 : COS_HALF_FIELD;
         double cosine = (cx * hx + cy * hy) / distance;
-        double edge = distance <= NEAR_RANGE ? 0 : COS_HALF_FIELD;
         if (Math.abs(cosine - edge) > 1e-9) {
             return cosine > edge;
         }

@@ -1,5 +1,7 @@
 package sitcov.world;
 
+import java.util.ArrayList;
+import java.util.List;
 import sitcov.geom.Box;
 import sitcov.geom.Vec2;
 

@@ -61,18 +61,23 @@ final class RoadTreeBuilder {
         }
         List<Junction> junctions = new ArrayList<>();
         for (Vec2 centre : tJunctions) {
-            junctions.add(withArms(junctions.size(), centre));
+            junctions.add(withArms(junctions.size(), centre, roads));
         }
         for (Road road : roads) {
             for (Vec2 end : List.of(road.start(), road.end())) {
                 if (junctions.stream().noneMatch(j -> j.contains(end.x(), end.y()))) {
-                    Vec2 inside = road.point(road.along(end.x(), end.y()) == road.from()
-                            ? road.from() + HALF_ROAD : road.to() - HALF_ROAD, road.centre());
-                    junctions.add(withArms(junctions.size(), new Vec2(rounded(inside.x()), rounded(inside.y()))));
+                    junctions.add(withArms(junctions.size(), deadEndCentre(road, end), roads));
                 }
             }
         }
         return junctions;
+    }
+
+    /** The centre of the dead end that closes {@code road} at its end {@code end}: half a road width inside. */
+    static Vec2 deadEndCentre(Road road, Vec2 end) {
+        Vec2 inside = road.point(road.along(end.x(), end.y()) == road.from()
+                ? road.from() + HALF_ROAD : road.to() - HALF_ROAD, road.centre());
+        return new Vec2(rounded(inside.x()), rounded(inside.y()));
     }
 
     private Road firstRoad() {
@@ -113,7 +118,7 @@ final class RoadTreeBuilder {
                 continue;
             }
             Road branch = Road.between(roads.size(), centre, end);
-            if (isClearOfAllBut(branch, parent)) {
+            if (isClearOfAllBut(branch, parent, roads)) {
                 roads.add(branch);
                 tJunctions.add(centre);
                 return;
@@ -141,7 +146,8 @@ final class RoadTreeBuilder {
         return null;
     }
 
-    private boolean isClearOfAllBut(Road branch, Road parent) {
+    /** Whether {@code branch} keeps {@link #ROAD_CLEARANCE} from every road of {@code roads} but its parent. */
+    static boolean isClearOfAllBut(Road branch, Road parent, List<Road> roads) {
         Rect surface = branch.surface().expanded(ROAD_CLEARANCE);
         for (Road road : roads) {
             if (road != parent && road.surface().touches(surface)) {
@@ -152,7 +158,7 @@ final class RoadTreeBuilder {
     }
 
     /** The end of a road from {@code start} along {@code axis}, {@code fraction} of the world across, kept on the map. */
-    private static Vec2 endOf(Vec2 start, Axis axis, double fraction) {
+    static Vec2 endOf(Vec2 start, Axis axis, double fraction) {
         if (axis == Axis.EAST_WEST) {
             return new Vec2(rounded(clamp(start.x() + fraction * WORLD_WIDTH, WORLD_WIDTH)), start.y());
         }
@@ -169,7 +175,7 @@ final class RoadTreeBuilder {
     }
 
     /** A junction at {@code centre} whose arms reach along every road through it, capped at 23 m. */
-    private Junction withArms(int id, Vec2 centre) {
+    static Junction withArms(int id, Vec2 centre, List<Road> roads) {
         double[] arms = new double[4]; // N, E, S, W
         for (Road road : roads) {
             if (!road.carries(centre)) {

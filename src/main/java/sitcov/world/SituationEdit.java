@@ -8,8 +8,8 @@ import sitcov.geom.Vec2;
 
 /**
  * One change to a situation that a search makes (issue 16): the Target or the car's start moved along
- * its road, the Target placed on any road, a parked car added, moved along its road or removed, the
- * moving cars placed afresh from another seed. An edit applies to a map and gives
+ * its road, the Target placed on any road, a parked car added, moved along its road or removed, a
+ * branch road added or removed ({@link BranchRoads}), the moving cars placed afresh from another seed. An edit applies to a map and gives
  * the edited map only if it keeps every rule of the world ({@link Invariants}); the map it gives is a
  * value like any other, written to a situation file to be replayed. Its {@link #text} names it, so
  * parent + edits is an identity.
@@ -124,13 +124,14 @@ public sealed interface SituationEdit {
         }
     }
 
-    /** Parked car {@code id} taken away. */
+    /** Parked car {@code id} taken away; the cars after it take the ids before them (ids are indices in situation files). */
     record RemoveParkedCar(int id) implements SituationEdit {
         @Override
         public Optional<WorldMap> edit(WorldMap map) {
             Layout l = map.layout();
             List<ParkedCar> cars = l.parkedCars().stream().filter(c -> c.id() != id).toList();
-            return cars.size() == l.parkedCars().size() ? Optional.empty() : Optional.of(with(map, parked(l, cars)));
+            return cars.size() == l.parkedCars().size() ? Optional.empty()
+                    : Optional.of(with(map, parked(l, ParkedCar.numbered(cars))));
         }
 
         @Override
@@ -157,6 +158,35 @@ public sealed interface SituationEdit {
         @Override
         public String text() {
             return String.format(Locale.ROOT, "add-parked-car:%.2f:%.2f", x, y);
+        }
+    }
+
+    /**
+     * A branch road added: it leaves road {@code parent} at {@code along} metres (its along coordinate)
+     * at a new T-junction and runs {@code length} metres across it (negative: towards 0) to a new dead end.
+     */
+    record AddBranchRoad(int parent, double along, double length) implements SituationEdit {
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            return BranchRoads.add(map, parent, along, length);
+        }
+
+        @Override
+        public String text() {
+            return String.format(Locale.ROOT, "add-branch-road:%d:%.2f:%+.2f", parent, along, length);
+        }
+    }
+
+    /** Branch road {@code id} removed with its junctions and parked cars, if no branch leaves it and it holds neither the Target nor the start. */
+    record RemoveBranchRoad(int id) implements SituationEdit {
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            return BranchRoads.remove(map, id, text());
+        }
+
+        @Override
+        public String text() {
+            return "remove-branch-road:" + id;
         }
     }
 

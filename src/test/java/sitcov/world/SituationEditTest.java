@@ -51,6 +51,15 @@ class SituationEditTest {
     }
 
     @Test
+    void aMapWithItsFirstParkedCarRemovedComesBackFromItsSituationFile() throws Exception {
+        // situation files number parked cars from 0 in order: the cars after a removed one move up
+        WorldMap fewer = new SituationEdit.RemoveParkedCar(MAP.layout().parkedCars().get(0).id()).apply(MAP).orElseThrow();
+        assertEquals(fewer, SituationFile.parse(List.of(SituationFile.format(fewer).split("\n")), "fewer"));
+        assertEquals(MAP.layout().parkedCars().get(1).centre(), fewer.layout().parkedCars().get(0).centre());
+        assertEquals(0, fewer.layout().parkedCars().get(0).id());
+    }
+
+    @Test
     void anEditedMapIsAValueASituationFileGivesBackWhole() throws Exception {
         WorldMap edited = new SituationEdit.MoveTarget(-2).apply(MAP).orElseThrow();
         WorldMap read = SituationFile.parse(List.of(SituationFile.format(edited).split("\n")), "edited");

@@ -40,13 +40,13 @@ class SituationEditTest {
         int first = cars.get(0).id();
         WorldMap fewer = new SituationEdit.RemoveParkedCar(first).apply(MAP).orElseThrow();
         assertEquals(cars.size() - 1, fewer.layout().parkedCars().size());
-        assertTrue(fewer.layout().parkedCars().stream().noneMatch(c -> c.id() == first));
+        assertTrue(fewer.layout().parkedCars().stream().noneMatch(c -> c.centre().equals(cars.get(0).centre())));
         // put one back where the removed car stood: the rules held there before
         ParkedCar gone = cars.get(0);
         WorldMap back = new SituationEdit.AddParkedCar(gone.centre().x(), gone.centre().y()).apply(fewer).orElseThrow();
         ParkedCar added = back.layout().parkedCars().get(back.layout().parkedCars().size() - 1);
         assertEquals(gone.centre(), added.centre());
-        assertEquals(cars.stream().mapToInt(ParkedCar::id).max().orElseThrow() + 1, added.id(), "the next free id");
+        assertEquals(fewer.layout().parkedCars().size(), added.id(), "the next free id, its index");
         assertEquals(MAP.layout().target(), back.layout().target());
     }
 

@@ -8,6 +8,7 @@ import static sitcov.world.Dimensions.rounded;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Optional;
 import sitcov.geom.Vec2;
 
@@ -91,16 +92,16 @@ final class BranchRoads {
         List<ParkedCar> parked = new ArrayList<>();
         for (ParkedCar c : l.parkedCars()) {
             if (c.roadId() != roadId) {
-                parked.add(new ParkedCar(c.id(), renumbered(c.roadId(), roadId), c.centre(), c.axis()));
+                // ids are indices: the cars after one that went move up
+                parked.add(new ParkedCar(parked.size(), renumbered(c.roadId(), roadId), c.centre(), c.axis()));
             }
         }
-        parked = ParkedCar.numbered(parked);
         Optional<Target> target = l.target().map(t -> new Target(t.position(), renumbered(t.roadId(), roadId)));
         List<StartPose> moving = new ArrayList<>();
         List<Omission> omissions = new ArrayList<>(map.movingCarOmissions());
         for (StartPose s : map.movingCars()) {
             if (road.contains(s.position().x(), s.position().y())) {
-                omissions.add(new Omission(String.format(java.util.Locale.ROOT, "moving car at %.3f %.3f",
+                omissions.add(new Omission(String.format(Locale.ROOT, "moving car at %.3f %.3f",
                         s.position().x(), s.position().y()), "its road went with " + edit));
             } else {
                 moving.add(s);

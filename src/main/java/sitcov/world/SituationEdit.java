@@ -4,11 +4,12 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import sitcov.geom.Compass;
 import sitcov.geom.Vec2;
 
 /**
  * One change to a situation that a search makes (issue 16): the Target or the car's start moved along
- * its road, the Target placed on any road, a parked car added, moved along its road or removed, a
+ * its road, the Target or the start placed on any road, a parked car added, moved along its road or removed, a
  * branch road added or removed ({@link BranchRoads}), the moving cars placed afresh from another seed. An edit applies to a map and gives
  * the edited map only if it keeps every rule of the world ({@link Invariants}); the map it gives is a
  * value like any other, written to a situation file to be replayed. Its {@link #text} names it, so
@@ -54,6 +55,30 @@ public sealed interface SituationEdit {
         @Override
         public String text() {
             return String.format(Locale.ROOT, "move-start:%+.2f", by);
+        }
+    }
+
+    /**
+     * The car's start placed at the lane centre nearest ({@code x}, {@code y}) on whichever road is
+     * there, facing that lane's legal direction: it may leave its road for another.
+     */
+    record PlaceStart(double x, double y) implements SituationEdit {
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            Layout l = map.layout();
+            Road road = RoadNetwork.of(l).roadAt(x, y);
+            if (road == null) {
+                return Optional.empty();
+            }
+            Compass lane = road.laneDirectionAt(x, y);
+            Vec2 p = road.point(Dimensions.rounded(road.along(x, y)), road.laneCentre(lane));
+            return Optional.of(with(map, new Layout(l.seed(), l.roads(), l.junctions(), l.parkedCars(), l.target(),
+                    Optional.of(new StartPose(p, lane)), l.junctionAttempts(), l.parkedCarsRequested(), l.omissions())));
+        }
+
+        @Override
+        public String text() {
+            return String.format(Locale.ROOT, "place-start:%.3f:%.3f", x, y);
         }
     }
 
@@ -187,6 +212,34 @@ public sealed interface SituationEdit {
         @Override
         public String text() {
             return "remove-branch-road:" + id;
+        }
+    }
+
+    /**
+     * Edits made one after another, each on the map the one before gave, as one edit: the world's
+     * rules hold for the map it ends with, not in between (a branch road added where the start stood,
+     * then the start placed on the branch, say).
+     */
+    record Chain(List<SituationEdit> edits) implements SituationEdit {
+        public Chain {
+            edits = List.copyOf(edits);
+            if (edits.isEmpty()) {
+                throw new IllegalArgumentException("a chain of edits needs at least one edit");
+            }
+        }
+
+        @Override
+        public Optional<WorldMap> edit(WorldMap map) {
+            Optional<WorldMap> edited = Optional.of(map);
+            for (SituationEdit e : edits) {
+                edited = edited.flatMap(e::edit);
+            }
+            return edited;
+        }
+
+        @Override
+        public String text() {
+            return String.join("+", edits.stream().map(SituationEdit::text).toList());
         }
     }
 

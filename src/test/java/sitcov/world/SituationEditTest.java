@@ -121,4 +121,65 @@ class SituationEditTest {
         assertEquals(List.of(), Invariants.violations(other));
         assertEquals("reseed-traffic:2", new SituationEdit.ReseedTraffic(2).text());
     }
+
+    @Test
+    void theStartPlacedOnAnotherRoadStandsOnALaneCentreFacingThatLanesWay() throws Exception {
+        int placed = 0;
+        for (Road road : MAP.layout().roads()) {
+            // the middle of the road, off its lane centres: the start is put on the nearer lane's centre
+            Vec2 middle = road.point((road.from() + road.to()) / 2, road.centre() - 0.4);
+            var edited = new SituationEdit.PlaceStart(middle.x(), middle.y()).apply(MAP);
+            if (edited.isEmpty()) {
+                continue; // a junction, a parked car or a moving car there: the rules refuse it
+            }
+            placed++;
+            StartPose after = edited.get().layout().carStart().orElseThrow();
+            // centre − 0.4 is in the first half: northbound or eastbound, its lane centre 1.5 m off the centre line
+            sitcov.geom.Compass way = road.isNorthSouth() ? sitcov.geom.Compass.NORTH : sitcov.geom.Compass.EAST;
+            assertEquals(way, after.heading());
+            assertEquals(road.centre() - 1.5, road.across(after.position().x(), after.position().y()), 1e-9);
+            assertEquals(road.along(middle.x(), middle.y()), road.along(after.position().x(), after.position().y()), 0.001);
+            assertEquals(List.of(), Invariants.violations(edited.get()));
+            assertEquals(MAP.layout().target(), edited.get().layout().target(), "nothing else changed");
+            assertEquals(edited.get(), SituationFile.parse(List.of(SituationFile.format(edited.get()).split("\n")), "placed"));
+        }
+        assertTrue(placed > 1, "map 1 has roads with a free middle");
+        assertEquals(Optional.empty(), new SituationEdit.PlaceStart(-50, -50).apply(MAP), "off every road");
+    }
+
+    @Test
+    void aChainOfEditsKeepsTheRulesOnlyAtItsEnd() {
+        // a branch road, then the start placed on the new branch: the chain gives what the two give in turn
+        SituationEdit branch = firstBranchThatFits(MAP);
+        WorldMap grown = branch.apply(MAP).orElseThrow();
+        Road added = grown.layout().roads().get(MAP.layout().roads().size());
+        Vec2 onBranch = added.point((added.from() + added.to()) / 2, added.centre() + 1.5);
+        SituationEdit start = new SituationEdit.PlaceStart(onBranch.x(), onBranch.y());
+        SituationEdit chain = new SituationEdit.Chain(List.of(branch, start));
+        Optional<WorldMap> both = chain.apply(MAP);
+        assertTrue(both.isPresent(), "the middle of a new branch is free for the start");
+        assertEquals(start.apply(grown), both);
+        assertEquals(Optional.empty(), start.apply(MAP), "without the branch there is no road there");
+        assertEquals(branch.text() + "+" + start.text(), chain.text());
+        // the Target moved 500 m (off every road) and back: each step alone breaks the rules, the chain keeps them
+        SituationEdit there = new SituationEdit.MoveTarget(500);
+        assertEquals(Optional.empty(), there.apply(MAP));
+        assertEquals(Optional.of(MAP.layout().target()), new SituationEdit.Chain(List.of(there, new SituationEdit.MoveTarget(-500)))
+                .apply(MAP).map(m -> m.layout().target()));
+    }
+
+    /** The first branch road, 30 m either way from a point 5 m apart along the roads of {@code map}, that keeps the rules. */
+    private static SituationEdit firstBranchThatFits(WorldMap map) {
+        for (Road road : map.layout().roads()) {
+            for (double along = road.from() + 10; along < road.to() - 10; along += 5) {
+                for (double length : new double[] {-30, 30}) {
+                    SituationEdit branch = new SituationEdit.AddBranchRoad(road.id(), along, length);
+                    if (branch.apply(map).isPresent()) {
+                        return branch;
+                    }
+                }
+            }
+        }
+        throw new AssertionError("no branch road fits map " + map.seed());
+    }
 }

@@ -26,7 +26,25 @@ final class CoverageSearchDriver implements Driver {
     static final int EXPLORE_EVERY = 2;
 
     private final TreeMap<Integer, WorldMap> elites = new TreeMap<>();
+    private final ElitePreference preference;
+    /** Names its situations {@code <prefix>-r<replication>-<n>}, unique in a results folder. */
+    private final String prefix;
     private int built;
+
+    /** coverage-search: every elite alike. */
+    CoverageSearchDriver() {
+        this(ElitePreference.EVEN, "search");
+    }
+
+    CoverageSearchDriver(ElitePreference preference, String prefix) {
+        this.preference = preference;
+        this.prefix = prefix;
+    }
+
+    /** fault-search: elites whose maps found rare faults edited more often. */
+    static CoverageSearchDriver faultSearch() {
+        return new CoverageSearchDriver(new ElitePreference.RareFaults(), "fault-search");
+    }
 
     @Override
     public void drive(DriverSession session) {
@@ -44,7 +62,7 @@ final class CoverageSearchDriver implements Driver {
     private void explore(DriverSession session) {
         Candidate c = session.nextCandidate();
         if (c.runnable() && c.inGrid() && !session.covers(c.cell())) {
-            session.run(c);
+            preference.ran(c.cell(), session.run(c));
             elites.put(c.cell(), MapGenerator.withMovingCars(c.layout()));
         }
     }
@@ -61,7 +79,7 @@ final class CoverageSearchDriver implements Driver {
             edit = AimedEdits.random(parent.layout(), choose);
         } else {
             // an elite, a criterion in which the next bin is empty, and which way: aim the edit there
-            int[] aim = frontier.get(choose.nextInt(frontier.size()));
+            int[] aim = pick(frontier, choose);
             parent = elites.get(aim[0]);
             edit = AimedEdits.toward(parent, session.grid(), aim[1], aim[2], aim[3], choose);
         }
@@ -71,9 +89,29 @@ final class CoverageSearchDriver implements Driver {
         }
         int cell = session.cellOf(child.get().layout());
         if (cell != Bins.INVALID && child.get().layout().isRunnable() && !session.covers(cell)) {
-            session.run("search-r" + session.replication() + "-" + built++, child.get(), spent);
+            preference.ran(cell, session.run(prefix + "-r" + session.replication() + "-" + built++, child.get(), spent));
             elites.put(cell, child.get());
         }
+    }
+
+    /** An aim drawn evenly, or by the weight of its elite. */
+    private int[] pick(List<int[]> frontier, RandomGenerator choose) {
+        if (preference.even()) {
+            return frontier.get(choose.nextInt(frontier.size()));
+        }
+        double[] upTo = new double[frontier.size()];
+        double total = 0;
+        for (int i = 0; i < upTo.length; i++) {
+            total += preference.weight(frontier.get(i)[0]);
+            upTo[i] = total;
+        }
+        double draw = choose.nextDouble() * total;
+        for (int i = 0; i < upTo.length; i++) {
+            if (draw < upTo[i]) {
+                return frontier.get(i);
+            }
+        }
+        return frontier.get(upTo.length - 1);
     }
 
     /**

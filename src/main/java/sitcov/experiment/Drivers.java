@@ -21,6 +21,7 @@ public final class Drivers {
         m.put("random", RandomDriver::new);
         m.put("every-other", EveryOtherDriver::new);
         m.put("coverage-search", CoverageSearchDriver::new);
+        m.put("fault-search", CoverageSearchDriver::faultSearch);
         return new Drivers(m);
     }
 

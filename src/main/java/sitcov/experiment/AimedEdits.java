@@ -21,8 +21,8 @@ import sitcov.world.WorldMap;
 
 /**
  * The edits coverage search makes: one aimed at the next bin of one criterion, or one drawn at random.
- * An aim is worked out from the map's geometry alone and never tried first: an edit that breaks a rule
- * of the world, or lands elsewhere, costs its candidate like any other.
+ * An aim is worked out from the map's geometry alone; whether it lands in the cell it aims at is only
+ * known once its map is measured, and an edit that lands elsewhere costs its candidate like any other.
  */
 final class AimedEdits {
     /** A new branch is at least this long, and at most this much longer. */

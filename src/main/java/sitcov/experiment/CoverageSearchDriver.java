@@ -24,6 +24,8 @@ import sitcov.world.WorldMap;
 final class CoverageSearchDriver implements Driver {
     /** One random candidate in this many, the rest edits. */
     static final int EXPLORE_EVERY = 2;
+    /** An edit that breaks a rule of the world is drawn again, at most this many times in all. */
+    static final int DRAWS = 20;
 
     private final TreeMap<Integer, WorldMap> elites = new TreeMap<>();
     private final ElitePreference preference;
@@ -72,18 +74,23 @@ final class CoverageSearchDriver implements Driver {
         // the edit is paid for with the next candidate of the stream, set aside
         Candidate spent = session.nextCandidate();
         WorldMap parent;
-        SituationEdit edit;
+        int[] aim = null;
         if (frontier.isEmpty()) {
             List<Integer> all = new ArrayList<>(elites.keySet());
             parent = elites.get(all.get(choose.nextInt(all.size())));
-            edit = AimedEdits.random(parent.layout(), choose);
         } else {
             // an elite, a criterion in which the next bin is empty, and which way: aim the edit there
-            int[] aim = pick(frontier, choose);
+            aim = pick(frontier, choose);
             parent = elites.get(aim[0]);
-            edit = AimedEdits.toward(parent, session.grid(), aim[1], aim[2], aim[3], choose);
         }
-        Optional<WorldMap> child = edit.apply(parent);
+        // one candidate is one situation that keeps the world's rules, as the generator's are: an edit
+        // that breaks one is drawn again, as the generator draws a parked car's place again
+        Optional<WorldMap> child = Optional.empty();
+        for (int draw = 0; draw < DRAWS && child.isEmpty(); draw++) {
+            SituationEdit edit = aim == null ? AimedEdits.random(parent.layout(), choose)
+                    : AimedEdits.toward(parent, session.grid(), aim[1], aim[2], aim[3], choose);
+            child = edit.apply(parent);
+        }
         if (child.isEmpty()) {
             return;
         }

@@ -168,6 +168,27 @@ class SituationEditTest {
                 .apply(MAP).map(m -> m.layout().target()));
     }
 
+    @Test
+    void aParkedCarWithinSixMetresOfATargetTwoHundredMetresFromTheStartIsPossible() throws Exception {
+        // issue 16's question for the cells nothing reached: one of them, C1 1.01-6.01 m in start-target's
+        // last bin. A situation coverage-search built (start near the north-east corner, Target near the west
+        // edge) and a parked car added at the kerb 5 m behind the Target: every rule kept, the car runnable
+        WorldMap far = SituationFile.read(java.nio.file.Path.of("src", "test", "resources", "situations",
+                "start-200m-from-target.situation"));
+        WorldMap edited = new SituationEdit.AddParkedCar(6.0, 73.81).apply(far).orElseThrow();
+        assertEquals(List.of(), Invariants.violations(edited));
+        assertTrue(edited.layout().isRunnable());
+        Vec2 start = edited.layout().carStart().orElseThrow().position();
+        Vec2 target = edited.layout().target().orElseThrow().position();
+        assertTrue(Math.hypot(start.x() - target.x(), start.y() - target.y()) >= 200, start + " to " + target);
+        double nearest = edited.layout().parkedCars().stream()
+                .mapToDouble(c -> Math.hypot(c.centre().x() - target.x(), c.centre().y() - target.y())).min().orElseThrow();
+        assertTrue(nearest > 1.01 && nearest < 6.01, "nearest parked car " + nearest + " m from the Target");
+        double before = far.layout().parkedCars().stream()
+                .mapToDouble(c -> Math.hypot(c.centre().x() - target.x(), c.centre().y() - target.y())).min().orElseThrow();
+        assertTrue(before > 6.01, "the search's own situation had none that near");
+    }
+
     /** The first branch road, 30 m either way from a point 5 m apart along the roads of {@code map}, that keeps the rules. */
     private static SituationEdit firstBranchThatFits(WorldMap map) {
         for (Road road : map.layout().roads()) {

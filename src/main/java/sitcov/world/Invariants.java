@@ -82,11 +82,19 @@ public final class Invariants {
             }
             if (layout.parkedCars().stream().anyMatch(c -> c.footprint().contains(p.x(), p.y()))) {
                 v.add(new Violation(Element.TARGET, 0, "the Target " + p + " is inside a parked car"));
+            } else if (Placement.nearParkedCar(p.x(), p.y(), layout.parkedCars(), Placement.TARGET_CLEARANCE)) {
+                // the generator's clearance: nearer, the car could not come within capture distance
+                v.add(new Violation(Element.TARGET, 0, "the Target " + p + " is within " + Placement.TARGET_CLEARANCE
+                        + " m of a parked car"));
             }
         });
         layout.carStart().ifPresent(s -> {
             checkStart(v, Element.CAR_START, 0, "the autonomous car", s, AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH,
                     layout, network);
+            if (layout.target().map(t -> t.position().distanceTo(s.position()) < Placement.MIN_START_TO_TARGET).orElse(false)) {
+                v.add(new Violation(Element.CAR_START, 0, "the autonomous car starts within " + Placement.MIN_START_TO_TARGET
+                        + " m of the Target: " + s));
+            }
             if (!Placement.hasRoomAhead(s, layout.parkedCars())) {
                 v.add(new Violation(Element.CAR_START, 0, "the autonomous car starts within " + Placement.ROOM_AHEAD
                         + " m behind a parked car: " + s));

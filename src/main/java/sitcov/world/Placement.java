@@ -171,7 +171,7 @@ final class Placement {
         return pose;
     }
 
-    private static boolean nearParkedCar(double x, double y, List<ParkedCar> parked, double clearance) {
+    static boolean nearParkedCar(double x, double y, List<ParkedCar> parked, double clearance) {
         for (ParkedCar car : parked) {
             Box grown = Box.centred(car.centre().x(), car.centre().y(), car.axis().bearing(),
                     CAR_LENGTH + 2 * clearance, CAR_WIDTH + 2 * clearance);

@@ -189,6 +189,28 @@ class SituationEditTest {
         assertTrue(before > 6.01, "the search's own situation had none that near");
     }
 
+    @Test
+    void editsKeepTheGeneratorsRoomAroundTheTarget() {
+        // the generator keeps the Target 1 m clear of parked cars (nearer, the car could not come within
+        // capture distance) and the start 3 m from it; an edit that breaks either gives no map
+        Target target = MAP.layout().target().orElseThrow();
+        Road road = MAP.layout().roads().get(target.roadId());
+        Vec2 t = target.position();
+        // a parked car whose kerb-side body ends 0.5 m short of the Target, along its road
+        double along = road.along(t.x(), t.y()) + (Dimensions.CAR_LENGTH / 2 + 0.5);
+        Vec2 car = road.point(along, road.across(t.x(), t.y()));
+        SituationEdit tooNear = new SituationEdit.AddParkedCar(car.x(), car.y());
+        List<String> broken = Invariants.violations(tooNear.edit(MAP).orElseThrow());
+        assertTrue(broken.stream().anyMatch(v -> v.contains("within 1.0 m of a parked car")), broken.toString());
+        assertEquals(Optional.empty(), tooNear.apply(MAP));
+        Vec2 beside = road.point(road.along(t.x(), t.y()) + 2, road.across(t.x(), t.y()));
+        SituationEdit startBeside = new SituationEdit.PlaceStart(beside.x(), beside.y());
+        WorldMap placed = startBeside.edit(MAP).orElseThrow();
+        assertTrue(placed.layout().carStart().orElseThrow().position().distanceTo(t) < 3, "the start 2 m along, on a lane centre");
+        assertTrue(Invariants.violations(placed).stream().anyMatch(v -> v.contains("within 3.0 m of the Target")),
+                Invariants.violations(placed).toString());
+    }
+
     /** The first branch road, 30 m either way from a point 5 m apart along the roads of {@code map}, that keeps the rules. */
     private static SituationEdit firstBranchThatFits(WorldMap map) {
         for (Road road : map.layout().roads()) {

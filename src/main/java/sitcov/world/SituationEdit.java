@@ -9,11 +9,12 @@ import sitcov.geom.Vec2;
 
 /**
  * One change to a situation that a search makes (issue 16): the Target or the car's start moved along
- * its road, the Target or the start placed on any road, a parked car added, moved along its road or removed, a
- * branch road added or removed ({@link BranchRoads}), the moving cars placed afresh from another seed. An edit applies to a map and gives
- * the edited map only if it keeps every rule of the world ({@link Invariants}); the map it gives is a
- * value like any other, written to a situation file to be replayed. Its {@link #text} names it, so
- * parent + edits is an identity.
+ * its road, the Target or the start placed on any road, a parked car added, moved along its road or
+ * removed, a branch road added or removed ({@link BranchRoads}), the moving cars placed afresh from
+ * another seed, or several of these in a {@link Chain}. An edit applies to a map and gives the edited
+ * map only if it keeps every rule of the world ({@link Invariants}); the map it gives is a value like
+ * any other, written to a situation file to be replayed. Its {@link #text} names it, so parent + edits
+ * is an identity.
  */
 public sealed interface SituationEdit {
     /** The edited map, or empty when the edit does not apply or the result breaks a rule of the world. */

@@ -58,6 +58,11 @@ public final class Invariants {
             String name = "moving car " + i;
             checkStart(v, Element.MOVING_CAR, i, name, pose, CAR_LENGTH, CAR_WIDTH, layout, network);
             Box body = pose.footprint(CAR_LENGTH, CAR_WIDTH);
+            if (layout.carStart().map(s -> s.position().distanceTo(pose.position()) < Placement.MOVING_CAR_MIN_DISTANCE)
+                    .orElse(false)) {
+                v.add(new Violation(Element.MOVING_CAR, i, name + " starts within " + Placement.MOVING_CAR_MIN_DISTANCE
+                        + " m of the autonomous car"));
+            }
             if (bodies.stream().anyMatch(body::overlaps)) {
                 v.add(new Violation(Element.MOVING_CAR, i, name + " overlaps the autonomous car or another moving car"));
             }
@@ -184,9 +189,15 @@ public final class Invariants {
                         + " is in a junction square, or centred in an approach or exit zone"));
             }
             for (int b = a + 1; b < cars.size(); b++) {
-                if (body.overlaps(cars.get(b).footprint())) {
-                    v.add(new Violation(Element.PARKED_CAR, cars.get(b).id(), "parked cars " + car.id() + " and "
-                            + cars.get(b).id() + " overlap"));
+                ParkedCar other = cars.get(b);
+                if (body.overlaps(other.footprint())) {
+                    v.add(new Violation(Element.PARKED_CAR, other.id(), "parked cars " + car.id() + " and "
+                            + other.id() + " overlap"));
+                } else if (car.roadId() >= 0 && car.roadId() < layout.roads().size()
+                        && Placement.tooNear(layout.roads().get(car.roadId()), car, other)) {
+                    // the generator's spacing: staggered nearer across a road, they block it for good
+                    v.add(new Violation(Element.PARKED_CAR, other.id(), "parked cars " + car.id() + " and " + other.id()
+                            + " stand nearer along their road than the generator spaces them"));
                 }
             }
         }

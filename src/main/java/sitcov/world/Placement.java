@@ -72,19 +72,25 @@ final class Placement {
                 || network.isInJunctionZone(centre.x(), centre.y())) {
             return null;
         }
-        double along = road.along(centre.x(), centre.y());
-        double across = road.across(centre.x(), centre.y());
         for (ParkedCar other : others) {
-            if (other.roadId() != road.id()) {
-                continue;
-            }
-            double gap = Math.abs(road.along(other.centre().x(), other.centre().y()) - along);
-            boolean sameKerb = road.across(other.centre().x(), other.centre().y()) == across;
-            if (gap < (sameKerb ? SAME_KERB_SPACING : OPPOSITE_KERB_SPACING)) {
+            if (tooNear(road, car, other)) {
                 return null;
             }
         }
         return car;
+    }
+
+    /**
+     * Whether two parked cars on {@code road} stand nearer along it than the generator spaces them:
+     * nose to tail at the same kerb, or staggered across it so closely that no car could pass between.
+     */
+    static boolean tooNear(Road road, ParkedCar car, ParkedCar other) {
+        if (car.roadId() != road.id() || other.roadId() != road.id()) {
+            return false;
+        }
+        double gap = Math.abs(road.along(other.centre().x(), other.centre().y()) - road.along(car.centre().x(), car.centre().y()));
+        boolean sameKerb = road.across(other.centre().x(), other.centre().y()) == road.across(car.centre().x(), car.centre().y());
+        return gap < (sameKerb ? SAME_KERB_SPACING : OPPOSITE_KERB_SPACING);
     }
 
     Optional<Target> target(RandomGenerator random, List<ParkedCar> parked, List<Omission> omissions) {

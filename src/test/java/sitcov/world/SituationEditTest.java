@@ -211,6 +211,36 @@ class SituationEditTest {
                 Invariants.violations(placed).toString());
     }
 
+    @Test
+    void aParkedCarAddedAcrossTheRoadFromAnotherAndBarelyStaggeredIsRefusedAsItWouldBlockTheRoad() {
+        // the generator spaces cars on opposite kerbs (5 + 2) x 1.5 = 10.5 m apart along the road, so a car
+        // can always pass between; 3 m apart they leave no way through
+        ParkedCar parked = MAP.layout().parkedCars().get(0);
+        Road road = MAP.layout().roads().get(parked.roadId());
+        double along = road.along(parked.centre().x(), parked.centre().y());
+        double otherKerb = 2 * road.centre() - road.across(parked.centre().x(), parked.centre().y());
+        Vec2 staggered = road.point(along + 3, otherKerb);
+        SituationEdit blocking = new SituationEdit.AddParkedCar(staggered.x(), staggered.y());
+        WorldMap blocked = blocking.edit(MAP).orElseThrow();
+        ParkedCar added = blocked.layout().parkedCars().get(blocked.layout().parkedCars().size() - 1);
+        assertEquals(otherKerb, road.across(added.centre().x(), added.centre().y()), 0.5, "at the other kerb");
+        List<String> broken = Invariants.violations(blocked);
+        assertTrue(broken.stream().anyMatch(v -> v.contains("nearer along their road than the generator spaces them")),
+                broken.toString());
+        assertEquals(Optional.empty(), blocking.apply(MAP));
+    }
+
+    @Test
+    void theStartPlacedJustAheadOfAMovingCarBreaksTheGeneratorsFiveMetres() {
+        StartPose moving = MAP.movingCars().get(0);
+        Vec2 ahead = moving.position().moved(moving.heading().bearing(), 4);
+        WorldMap placed = new SituationEdit.PlaceStart(ahead.x(), ahead.y()).edit(MAP).orElseThrow();
+        assertEquals(4, placed.layout().carStart().orElseThrow().position().distanceTo(moving.position()), 0.01);
+        List<String> broken = Invariants.violations(placed);
+        assertTrue(broken.stream().anyMatch(v -> v.equals("moving car 0 starts within 5.0 m of the autonomous car")),
+                broken.toString());
+    }
+
     /** The first branch road, 30 m either way from a point 5 m apart along the roads of {@code map}, that keeps the rules. */
     private static SituationEdit firstBranchThatFits(WorldMap map) {
         for (Road road : map.layout().roads()) {

@@ -48,9 +48,8 @@ public sealed interface SituationEdit {
         @Override
         public Optional<WorldMap> edit(WorldMap map) {
             Layout l = map.layout();
-            return l.carStart().flatMap(s -> roadAt(l, s.position()).map(road -> with(map, new Layout(l.seed(), l.roads(),
-                    l.junctions(), l.parkedCars(), l.target(), Optional.of(new StartPose(slide(road, s.position(), by),
-                    s.heading())), l.junctionAttempts(), l.parkedCarsRequested(), l.omissions()))));
+            return l.carStart().flatMap(s -> roadAt(l, s.position()).map(road -> with(map,
+                    started(l, new StartPose(slide(road, s.position(), by), s.heading())))));
         }
 
         @Override
@@ -73,8 +72,7 @@ public sealed interface SituationEdit {
             }
             Compass lane = road.laneDirectionAt(x, y);
             Vec2 p = road.point(Dimensions.rounded(road.along(x, y)), road.laneCentre(lane));
-            return Optional.of(with(map, new Layout(l.seed(), l.roads(), l.junctions(), l.parkedCars(), l.target(),
-                    Optional.of(new StartPose(p, lane)), l.junctionAttempts(), l.parkedCarsRequested(), l.omissions())));
+            return Optional.of(with(map, started(l, new StartPose(p, lane))));
         }
 
         @Override
@@ -260,6 +258,11 @@ public sealed interface SituationEdit {
 
     private static Layout targeted(Layout l, Target target) {
         return new Layout(l.seed(), l.roads(), l.junctions(), l.parkedCars(), Optional.of(target), l.carStart(),
+                l.junctionAttempts(), l.parkedCarsRequested(), l.omissions());
+    }
+
+    private static Layout started(Layout l, StartPose start) {
+        return new Layout(l.seed(), l.roads(), l.junctions(), l.parkedCars(), l.target(), Optional.of(start),
                 l.junctionAttempts(), l.parkedCarsRequested(), l.omissions());
     }
 

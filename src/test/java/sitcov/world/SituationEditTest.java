@@ -54,7 +54,7 @@ class SituationEditTest {
     void aMapWithItsFirstParkedCarRemovedComesBackFromItsSituationFile() throws Exception {
         // situation files number parked cars from 0 in order: the cars after a removed one move up
         WorldMap fewer = new SituationEdit.RemoveParkedCar(MAP.layout().parkedCars().get(0).id()).apply(MAP).orElseThrow();
-        assertEquals(fewer, SituationFile.parse(List.of(SituationFile.format(fewer).split("\n")), "fewer"));
+        assertEquals(fewer, readBack(fewer));
         assertEquals(MAP.layout().parkedCars().get(1).centre(), fewer.layout().parkedCars().get(0).centre());
         assertEquals(0, fewer.layout().parkedCars().get(0).id());
     }
@@ -62,7 +62,7 @@ class SituationEditTest {
     @Test
     void anEditedMapIsAValueASituationFileGivesBackWhole() throws Exception {
         WorldMap edited = new SituationEdit.MoveTarget(-2).apply(MAP).orElseThrow();
-        WorldMap read = SituationFile.parse(List.of(SituationFile.format(edited).split("\n")), "edited");
+        WorldMap read = readBack(edited);
         assertEquals(edited, read);
         assertEquals("move-target:-2.00", new SituationEdit.MoveTarget(-2).text());
     }
@@ -105,7 +105,7 @@ class SituationEditTest {
             assertEquals(0, after.position().distanceTo(middle.x(), middle.y()), 0.001);
             assertEquals(List.of(), Invariants.violations(edited.get()));
             assertEquals(MAP.layout().carStart(), edited.get().layout().carStart(), "nothing else changed");
-            assertEquals(edited.get(), SituationFile.parse(List.of(SituationFile.format(edited.get()).split("\n")), "placed"));
+            assertEquals(edited.get(), readBack(edited.get()));
         }
         assertTrue(placed > 0, "map 1 has another road with a free middle");
         assertEquals(Optional.empty(), new SituationEdit.PlaceTarget(-50, -50).apply(MAP), "off every road");
@@ -141,7 +141,7 @@ class SituationEditTest {
             assertEquals(road.along(middle.x(), middle.y()), road.along(after.position().x(), after.position().y()), 0.001);
             assertEquals(List.of(), Invariants.violations(edited.get()));
             assertEquals(MAP.layout().target(), edited.get().layout().target(), "nothing else changed");
-            assertEquals(edited.get(), SituationFile.parse(List.of(SituationFile.format(edited.get()).split("\n")), "placed"));
+            assertEquals(edited.get(), readBack(edited.get()));
         }
         assertTrue(placed > 1, "map 1 has roads with a free middle");
         assertEquals(Optional.empty(), new SituationEdit.PlaceStart(-50, -50).apply(MAP), "off every road");
@@ -254,5 +254,10 @@ class SituationEditTest {
             }
         }
         throw new AssertionError("no branch road fits map " + map.seed());
+    }
+
+    /** The map as its situation file gives it back. */
+    private static WorldMap readBack(WorldMap map) throws SituationFormatException {
+        return SituationFile.parse(List.of(SituationFile.format(map).split("\n")), "edited");
     }
 }

@@ -21,6 +21,13 @@ package sitcov.stats;
  * One difference from R: R falls back to the normal approximation whenever zeros were dropped,
  * while here the exact distribution of the remaining n differences is used, which is valid because
  * the dropped zeros carry no sign.
+ *
+ * <p>A one-sided test ({@link Alternative#GREATER}: x tends to exceed y) takes the one tail, P(W⁺ ≥ w)
+ * exactly or Φ(−z) with the correction of ½ towards the mean, as R's {@code alternative = "greater"}.
+ * {@link #smallestP} is the least p-value the test can give on differences of the observed sizes,
+ * reached when all of them lean the same way: with n untied non-zero differences 2/2ⁿ two-sided and
+ * 1/2ⁿ one-sided, so five paired replications can never reach p &lt; 0.05 two-sided (2/32 = 0.0625).
+ * A test whose smallest p is above the level cannot find anything, which a verdict must say.
  */
 public final class WilcoxonSignedRank {
     /**
@@ -44,8 +51,23 @@ public final class WilcoxonSignedRank {
     public record Result(double wPlus, int n, double z, double p, boolean exact) {
     }
 
-    /** Tests the pairs (x[i], y[i]); the arrays must have the same length and no NaN. */
+    /** Which way the test looks. */
+    public enum Alternative {
+        /** x and y differ either way. */
+        TWO_SIDED,
+        /** x tends to exceed y (the differences x − y lean positive). */
+        GREATER,
+        /** x tends to fall below y. */
+        LESS
+    }
+
+    /** Tests the pairs (x[i], y[i]) two-sided; the arrays must have the same length and no NaN. */
     public static Result test(double[] x, double[] y) {
+        return test(x, y, Alternative.TWO_SIDED);
+    }
+
+    /** Tests the pairs (x[i], y[i]) against {@code alternative}. */
+    public static Result test(double[] x, double[] y, Alternative alternative) {
         if (x.length != y.length) {
             throw new IllegalArgumentException("paired samples differ in length: " + x.length + " vs " + y.length);
         }
@@ -53,11 +75,28 @@ public final class WilcoxonSignedRank {
         for (int i = 0; i < d.length; i++) {
             d[i] = x[i] - y[i];
         }
-        return test(d);
+        return test(d, alternative);
     }
 
-    /** Tests whether the differences {@code d} are centred on zero. */
+    /** Tests whether the differences {@code d} are centred on zero, two-sided. */
     public static Result test(double[] d) {
+        return test(d, Alternative.TWO_SIDED);
+    }
+
+    /**
+     * The least p-value {@link #test(double[], Alternative)} can give for differences of the sizes of
+     * {@code d}: all of them on the side the alternative looks for. 1 when no difference is non-zero.
+     */
+    public static double smallestP(double[] d, Alternative alternative) {
+        double[] leaning = new double[d.length];
+        for (int i = 0; i < d.length; i++) {
+            leaning[i] = alternative == Alternative.LESS ? -Math.abs(d[i]) : Math.abs(d[i]);
+        }
+        return test(leaning, alternative).p();
+    }
+
+    /** Tests whether the differences {@code d} are centred on zero, against {@code alternative}. */
+    public static Result test(double[] d, Alternative alternative) {
         int n = 0;
         for (double v : d) {
             if (Double.isNaN(v)) {
@@ -84,19 +123,29 @@ public final class WilcoxonSignedRank {
         }
         double ties = Ranks.tieTerm(magnitudes);
         if (ties == 0 && n <= EXACT_MAX) {
-            return new Result(wPlus, n, Double.NaN, exactP(Math.round(wPlus), n), true);
+            return new Result(wPlus, n, Double.NaN, exactP(Math.round(wPlus), n, alternative), true);
         }
         double variance = n * (n + 1.0) * (2 * n + 1) / 24 - ties / 48;
         if (variance <= 0) {
             return new Result(wPlus, n, 0, 1, false);
         }
         double shift = wPlus - n * (n + 1.0) / 4;
-        double z = (shift - Math.signum(shift) * 0.5) / Math.sqrt(variance);
-        return new Result(wPlus, n, z, Math.min(1, 2 * Normal.cdf(-Math.abs(z))), false);
+        double correction = switch (alternative) {
+            case TWO_SIDED -> Math.signum(shift) * 0.5;
+            case GREATER -> 0.5;
+            case LESS -> -0.5;
+        };
+        double z = (shift - correction) / Math.sqrt(variance);
+        double p = switch (alternative) {
+            case TWO_SIDED -> Math.min(1, 2 * Normal.cdf(-Math.abs(z)));
+            case GREATER -> Normal.cdf(-z);
+            case LESS -> Normal.cdf(z);
+        };
+        return new Result(wPlus, n, z, p, false);
     }
 
-    /** Two-sided exact p of W⁺ = w among n untied non-zero differences. */
-    static double exactP(long w, int n) {
+    /** Exact p of W⁺ = w among n untied non-zero differences. */
+    static double exactP(long w, int n, Alternative alternative) {
         int max = n * (n + 1) / 2;
         long[] c = new long[max + 1]; // c[s]: sign patterns with W+ = s; at most 2^49, exact in a long and a double
         c[0] = 1;
@@ -112,6 +161,10 @@ public final class WilcoxonSignedRank {
             atMost += s <= w ? c[s] : 0;
             atLeast += s >= w ? c[s] : 0;
         }
-        return Math.min(1, 2 * Math.min(atMost, atLeast) / all);
+        return switch (alternative) {
+            case TWO_SIDED -> Math.min(1, 2 * Math.min(atMost, atLeast) / all);
+            case GREATER -> atLeast / all;
+            case LESS -> atMost / all;
+        };
     }
 }

@@ -80,7 +80,37 @@ class WilcoxonSignedRankTest {
     void theExactDistributionForThreeDifferencesIsTheOneOfTheTextbooks() {
         // n = 3: W+ takes 0, 1, 2, 3, 3, 4, 5, 6 over the 8 sign patterns (by hand), so W+ = 6 has
         // two-sided p = 2/8 and W+ = 3 has p = min(1, 2 * 5/8) = 1.
-        assertEquals(0.25, WilcoxonSignedRank.exactP(6, 3), 1e-15);
-        assertEquals(1, WilcoxonSignedRank.exactP(3, 3), 1e-15);
+        assertEquals(0.25, WilcoxonSignedRank.exactP(6, 3, WilcoxonSignedRank.Alternative.TWO_SIDED), 1e-15);
+        assertEquals(1, WilcoxonSignedRank.exactP(3, 3, WilcoxonSignedRank.Alternative.TWO_SIDED), 1e-15);
+    }
+
+    @Test
+    void theOneSidedTestOfTheDepressionExampleHasRsPValue() {
+        // R's ?wilcox.test: wilcox.test(x, y, paired = TRUE, alternative = "greater") gives V = 40, p-value =
+        // 0.01953 (exact: 10 / 2^9 = 0.01953125)
+        double[] x = {1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30};
+        double[] y = {0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29};
+        assertEquals(0.01953125, WilcoxonSignedRank.test(x, y, WilcoxonSignedRank.Alternative.GREATER).p(), 1e-15);
+        // the other tail: P(W+ <= 40) = 1 - P(W+ >= 41) = 1 - 7/512 (the 3 subsets of 1..9 summing to 5 are the
+        // patterns with W+ = 40), R's alternative = "less" p-value 0.9863
+        assertEquals(505 / 512.0, WilcoxonSignedRank.test(x, y, WilcoxonSignedRank.Alternative.LESS).p(), 1e-15);
+    }
+
+    @Test
+    void theSmallestAttainablePIsTwoInTwoToTheNTwoSided() {
+        // all n untied differences of one sign: W+ = n(n+1)/2, reached by 1 of 2^n sign patterns
+        for (int n : new int[] {5, 6, 10}) {
+            double[] d = new double[n];
+            for (int i = 0; i < n; i++) {
+                d[i] = (i % 2 == 0 ? 1 : -1) * (i + 1.5);
+            }
+            assertEquals(2 / Math.pow(2, n), WilcoxonSignedRank.smallestP(d, WilcoxonSignedRank.Alternative.TWO_SIDED),
+                    1e-15, "n=" + n);
+            assertEquals(1 / Math.pow(2, n), WilcoxonSignedRank.smallestP(d, WilcoxonSignedRank.Alternative.GREATER),
+                    1e-15, "n=" + n);
+        }
+        // so five paired replications cannot reach 0.05 two-sided (0.0625), six can (0.03125), ten reach 0.002
+        assertEquals(0.0625, WilcoxonSignedRank.smallestP(new double[] {1, 2, 3, 4, 5}, WilcoxonSignedRank.Alternative.TWO_SIDED), 0);
+        assertEquals(1, WilcoxonSignedRank.smallestP(new double[] {0, 0, 0}, WilcoxonSignedRank.Alternative.TWO_SIDED), 0);
     }
 }

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Properties;
 import java.util.Set;
 import sitcov.coverage.GridDefinition;
+import sitcov.experiment.AnalysisPlan;
 import sitcov.experiment.BudgetKind;
 import sitcov.experiment.Drivers;
 import sitcov.experiment.ExperimentConfig;
@@ -21,8 +22,14 @@ import sitcov.faults.FaultSet;
  * preset with {@code sweep=} budgets is an effort sweep; otherwise it is a comparison.
  */
 record Preset(Path file, ExperimentConfig config) {
-    private static final Set<String> KEYS = Set.of("name", "master_seed", "candidates", "replications", "faults", "budget",
-            "faulty_runs", "grid", "description", "sweep", "drivers", "candidate_limit");
+    private static final Set<String> KEYS = keys();
+
+    private static Set<String> keys() {
+        Set<String> keys = new java.util.TreeSet<>(List.of("name", "master_seed", "candidates", "replications", "faults",
+                "budget", "faulty_runs", "grid", "description", "sweep", "drivers", "candidate_limit"));
+        keys.addAll(AnalysisPlan.keys());
+        return Set.copyOf(keys);
+    }
 
     static Path locate(String nameOrFile) throws UsageException {
         Path direct = Path.of(nameOrFile);
@@ -103,8 +110,10 @@ record Preset(Path file, ExperimentConfig config) {
             field = "grid";
             String gridFile = p.getProperty("grid");
             GridDefinition grid = gridFile == null ? GridDefinition.paper() : GridDefinition.read(Path.of(gridFile.strip()));
+            field = "analysis";
+            AnalysisPlan analysis = AnalysisPlan.read(p::getProperty, drivers);
             return new ExperimentConfig(name, seed, candidates, replications, faults, budget, grid, drivers, sweep,
-                    candidateLimit, faultyRuns);
+                    candidateLimit, faultyRuns, analysis);
         } catch (IOException e) {
             throw new UsageException("run: " + file + ": cannot read its grid: " + e.getMessage());
         } catch (NumberFormatException e) {

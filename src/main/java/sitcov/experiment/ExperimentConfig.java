@@ -13,10 +13,11 @@ import sitcov.faults.Fault;
  * {@code candidates} candidates; each later driver gets the same budget of the given kind (and never
  * draws more than {@code candidateLimit}). A sweep ({@code sweep} not empty): the same, once per
  * candidate budget of the sweep and map set, with {@code replications} map sets per budget.
+ * {@code analysis} declares how a comparison's results are judged.
  */
 public record ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
                                BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
-                               int candidateLimit, FaultyRuns faultyRuns) {
+                               int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis) {
     public static final List<String> PAPER_DRIVERS = List.of("coverage-filter", "random");
 
     public ExperimentConfig {
@@ -35,9 +36,22 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
                     + largest + " candidates");
         }
         Objects.requireNonNull(faultyRuns, "faultyRuns");
+        Objects.requireNonNull(analysis, "analysis");
+        if (!drivers.containsAll(analysis.primaryDrivers())) {
+            throw new IllegalArgumentException("the primary question's drivers " + analysis.primaryDrivers()
+                    + " are not among the drivers " + drivers);
+        }
         faults = Set.copyOf(faults);
         drivers = List.copyOf(drivers);
         sweep = List.copyOf(sweep);
+    }
+
+    /** The default analysis: distinct faults found, the first driver against the second, default margins. */
+    public ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
+                            BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
+                            int candidateLimit, FaultyRuns faultyRuns) {
+        this(name, masterSeed, candidates, replications, faults, budget, grid, drivers, sweep, candidateLimit, faultyRuns,
+                AnalysisPlan.defaults(drivers));
     }
 
     /** The paper's two drivers, no sweep, a candidate limit ten times the first driver's candidates, faulty runs until their verdict. */

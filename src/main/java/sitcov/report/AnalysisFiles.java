@@ -29,12 +29,13 @@ final class AnalysisFiles {
     }
 
     static void write(ExperimentConfig config, Summary summary, Path folder) throws IOException {
-        Comparison comparison = Comparison.of(summary, SeedPlan.analysis(config.masterSeed(), "bootstrap"));
+        Comparison comparison = Comparison.of(config, summary, SeedPlan.analysis(config.masterSeed(), "bootstrap"));
         SituationFaults situations = SituationFaults.of(summary.results(), summary.faults());
         List<SituationFaults.Uniformity> uniformity = situations.uniformity(DEALS,
                 SeedPlan.analysis(config.masterSeed(), "cell-deals"));
         OutputFile.writeLines(folder.resolve(ResultsFolder.STATS), StatsCsv.rows(comparison));
-        OutputFile.writeLines(folder.resolve(ResultsFolder.VERDICT), VerdictText.lines(comparison, uniformity));
+        OutputFile.writeLines(folder.resolve(ResultsFolder.VERDICT), VerdictText.lines(comparison, uniformity,
+                config.budget()));
         OutputFile.writeLines(folder.resolve(ResultsFolder.DISCOVERY), discovery(summary));
         OutputFile.writeLines(folder.resolve(ResultsFolder.CELL_FAULTS), cellFaults(situations));
         OutputFile.writeLines(folder.resolve(ResultsFolder.UNIFORMITY), uniformity(uniformity));

@@ -50,11 +50,9 @@ final class HtmlReport {
                 .append(" candidates · budget ").append(esc(config.budget().key())).append(" · faults ")
                 .append(esc(sitcov.faults.FaultSet.format(config.faults()))).append(" · faulty runs ")
                 .append(esc(config.faultyRuns().key())).append("</p>\n");
-        h.append("<h2>Verdict</h2><ul class=\"verdict\">");
-        for (String line : lines(folder, ResultsFolder.VERDICT)) {
-            h.append("<li>").append(esc(line.replaceFirst("^- ", ""))).append("</li>");
-        }
-        h.append("</ul>\n");
+        h.append("<h2>Verdict</h2><div class=\"verdict\">");
+        verdict(h, lines(folder, ResultsFolder.VERDICT));
+        h.append("</div>\n");
         section(h, "The paper's measures per replication", folder, ResultsFolder.SUMMARY);
         stats(h, lines(folder, ResultsFolder.STATS));
         section(h, "Table 2: the share of maps finding each fault", folder, ResultsFolder.TABLE2);
@@ -76,24 +74,48 @@ final class HtmlReport {
         table(h, lines(folder, csv));
     }
 
-    /** stats.csv as two tables, measures and faults, each with only the columns that apply to it. */
+    /** The verdict's lines: items ("- ...") as a list under the line before them, the rest as paragraphs. */
+    private static void verdict(StringBuilder h, List<String> lines) {
+        boolean inList = false;
+        for (String line : lines) {
+            boolean item = line.startsWith("- ");
+            if (item && !inList) {
+                h.append("<ul>");
+            } else if (!item && inList) {
+                h.append("</ul>");
+            }
+            inList = item;
+            h.append(item ? "<li>" : "<p>").append(esc(item ? line.substring(2) : line)).append(item ? "</li>" : "</p>");
+        }
+        h.append(inList ? "</ul>" : "");
+    }
+
+    private static final List<String> MEASURE_COLUMNS = List.of("name", "driver_a", "driver_b", "role", "finding", "mean_a",
+            "mean_b", "difference", "ci_low", "ci_high", "p_adjusted", "detectable_80", "margin", "p_tost_adjusted",
+            "a12_unpaired", "note");
+    private static final List<String> FAULT_COLUMNS = List.of("name", "driver_a", "driver_b", "finding", "mean_a", "mean_b",
+            "difference", "ci_low", "ci_high", "p_adjusted", "dispersion_a", "dispersion_b", "found_a", "maps_a", "found_b",
+            "maps_b", "p_fisher_pooled", "odds_ratio_pooled", "note");
+
+    /** stats.csv as two tables, measures and faults, each with the columns that matter for it. */
     private static void stats(StringBuilder h, List<String> rows) {
         h.append("<h2>Statistics of every pair of drivers</h2><p class=\"muted\">from <a href=\"").append(ResultsFolder.STATS)
-                .append("\">").append(ResultsFolder.STATS).append("</a>; difference = driver_a minus driver_b; an odds ratio"
-                + " above 1 favours driver_a</p>");
+                .append("\">").append(ResultsFolder.STATS).append("</a> (all its columns there); difference = driver_a minus"
+                + " driver_b over paired replications, for a fault of each replication's share of maps finding it;"
+                + " p_adjusted is Holm-adjusted over the exploratory family (the primary test's own p for the primary);"
+                + " the pooled Fisher p and odds ratio only describe</p>");
         if (rows.isEmpty()) {
             return;
         }
         List<String> header = List.of(rows.get(0).split(",", -1));
-        int foundA = header.indexOf("found_a");
         for (String kind : List.of("measure", "fault")) {
+            List<String> columns = kind.equals("measure") ? MEASURE_COLUMNS : FAULT_COLUMNS;
             List<String> kept = new ArrayList<>();
-            for (String r : rows) {
+            kept.add(String.join(",", columns));
+            for (String r : rows.subList(1, rows.size())) {
                 List<String> v = List.of(r.split(",", -1));
-                if (r == rows.get(0) || v.get(0).equals(kind)) {
-                    List<String> cols = new ArrayList<>(v.subList(1, 4));
-                    cols.addAll(kind.equals("measure") ? v.subList(4, foundA) : v.subList(foundA, v.size()));
-                    kept.add(String.join(",", cols));
+                if (v.get(0).equals(kind)) {
+                    kept.add(String.join(",", columns.stream().map(c -> v.get(header.indexOf(c))).toList()));
                 }
             }
             table(h, kept);

@@ -17,6 +17,7 @@ import java.util.Map;
 import java.util.Properties;
 import java.util.TreeMap;
 import sitcov.coverage.GridDefinition;
+import sitcov.experiment.AnalysisPlan;
 import sitcov.experiment.BudgetKind;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.FaultyRuns;
@@ -64,6 +65,7 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         m.put("faulty_runs", c.faultyRuns().key());
         m.put("grid", ResultsFolder.GRID);
         m.put("grid_sha256", sha256(c.grid().format()));
+        m.putAll(c.analysis().properties());
         return m;
     }
 
@@ -109,12 +111,15 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
             String sweepText = p.getProperty("sweep", "");
             List<Integer> sweep = sweepText.isBlank() ? List.of()
                     : Arrays.stream(sweepText.split(",")).map(s -> Integer.parseInt(s.strip())).toList();
+            List<String> drivers = List.of(required(p, "drivers").split(","));
             ExperimentConfig config = new ExperimentConfig(required(p, "preset"), Long.parseLong(required(p, "master_seed")),
                     Integer.parseInt(required(p, "candidates")), Integer.parseInt(required(p, "replications")),
                     FaultSet.parse(required(p, "faults")), BudgetKind.ofKey(required(p, "budget")), grid,
-                    List.of(required(p, "drivers").split(",")), sweep, Integer.parseInt(required(p, "candidate_limit")),
+                    drivers, sweep, Integer.parseInt(required(p, "candidate_limit")),
                     // folders written before faulty runs could stop at their verdict ran them to the end
-                    FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.TO_END.key())));
+                    FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.TO_END.key())),
+                    // folders written before the analysis was declared are judged by its defaults
+                    AnalysisPlan.read(p::getProperty, drivers));
             Shard shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
             return new Manifest(config, required(p, "sitcov_version"), shard,
                     Boolean.parseBoolean(required(p, "complete")), Boolean.parseBoolean(p.getProperty("resumed", "false")));

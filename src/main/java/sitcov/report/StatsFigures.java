@@ -12,27 +12,29 @@ import java.util.List;
 import java.util.Locale;
 import sitcov.experiment.Comparison;
 import sitcov.experiment.Discovery;
+import sitcov.experiment.FaultTest;
+import sitcov.experiment.Measure;
 import sitcov.experiment.ReplicationResult;
 import sitcov.experiment.Summary;
 import sitcov.stats.Descriptive;
 
 /**
- * The figures of the statistics: per-fault odds ratios with their CIs (a forest plot, first pair of
- * drivers), each measure's replications by driver (strip plots with the median), and distinct
+ * The figures of the statistics: per-fault odds ratios of the pooled maps with their CIs (a forest
+ * plot of the first pair of drivers, descriptive; bold where the replication-level test shows a difference), each measure's replications by driver (strip plots with the median), and distinct
  * faults found against ticks (median and quartile band over replications).
  */
 final class StatsFigures {
-    private static final Measure[] STRIPS = {
-        new Measure(Comparison.Measure.CELLS_COVERED, "cells covered"),
-        new Measure(Comparison.Measure.FAULTS_FOUND, "distinct faults found"),
-        new Measure(Comparison.Measure.AVG_MAP_FAULT, "faults found per map"),
-        new Measure(Comparison.Measure.DISCOVERY_AREA, "area under faults-vs-ticks")};
+    private static final Strip[] STRIPS = {
+        new Strip(Measure.CELLS_COVERED, "cells covered"),
+        new Strip(Measure.FAULTS_FOUND, "distinct faults found"),
+        new Strip(Measure.AVG_MAP_FAULT, "faults found per map"),
+        new Strip(Measure.DISCOVERY_AREA, "area under faults-vs-ticks")};
     /** Points at which the discovery curves are read, from no ticks to the shortest horizon. */
     private static final int CURVE_POINTS = 200;
     private static final double OR_MIN = 0.05;
     private static final double OR_MAX = 20;
 
-    private record Measure(Comparison.Measure measure, String label) {
+    private record Strip(Measure measure, String label) {
     }
 
     private StatsFigures() {
@@ -45,7 +47,7 @@ final class StatsFigures {
     }
 
     static BufferedImage oddsRatios(Summary summary, Comparison comparison) {
-        List<Comparison.FaultTest> tests = comparison.faults().stream()
+        List<FaultTest> tests = comparison.faults().stream()
                 .filter(t -> t.driverA().equals(summary.drivers().get(0))
                         && t.driverB().equals(summary.drivers().size() > 1 ? summary.drivers().get(1) : ""))
                 .toList();
@@ -57,7 +59,8 @@ final class StatsFigures {
         Graphics2D g = ExperimentFigures.graphics(image);
         String a = tests.isEmpty() ? "?" : tests.get(0).driverA();
         String b = tests.isEmpty() ? "?" : tests.get(0).driverB();
-        ExperimentFigures.title(g, "Odds of a map finding each fault: " + a + " against " + b + " (95 % CI, log scale)");
+        ExperimentFigures.title(g, "Odds of a map finding each fault: " + a + " against " + b
+                + " (all maps pooled, 95 % CI, log scale)");
         double lo = Math.log(OR_MIN);
         double span = Math.log(OR_MAX) - lo;
         java.util.function.DoubleToIntFunction px = or -> left
@@ -74,17 +77,18 @@ final class StatsFigures {
         g.drawString("odds ratio (> 1: " + a + " finds it on more of its maps; ends beyond 0.05 or 20 are clipped)",
                 left, bottom + 32);
         for (int i = 0; i < tests.size(); i++) {
-            Comparison.FaultTest t = tests.get(i);
+            FaultTest t = tests.get(i);
             int y = top + i * rowHeight + rowHeight / 2;
-            boolean differs = t.pHolm() < VerdictText.ALPHA;
+            boolean differs = FaultFindings.differs(t.finding());
             g.setColor(Color.BLACK);
             g.setFont(new Font(Font.SANS_SERIF, differs ? Font.BOLD : Font.PLAIN, 12));
             g.drawString(String.format(Locale.ROOT, "fault %2d  %d/%d vs %d/%d", t.fault().id(), t.foundA(), t.mapsA(),
                     t.foundB(), t.mapsB()), 20, y + 4);
-            g.drawString("Holm p " + VerdictText.p(t.pHolm()), left + width + 20, y + 4);
-            if (t.foundA() == 0 && t.foundB() == 0) {
+            g.drawString(t.finding().tested() ? "Holm p " + VerdictText.p(t.paired().pAdjusted()) : "not tested",
+                    left + width + 20, y + 4);
+            if (t.note() != null) {
                 g.setColor(Color.GRAY);
-                g.drawString("found by neither", px.applyAsInt(1) + 8, y + 4);
+                g.drawString(t.note(), px.applyAsInt(1) + 8, y + 4);
                 continue;
             }
             g.setColor(differs ? Chart.COVERAGE : Color.GRAY);
@@ -94,8 +98,8 @@ final class StatsFigures {
             g.fillRect(x - 4, y - 4, 9, 9);
         }
         g.setColor(Color.BLACK);
-        g.drawString("bold, blue: detection differs after Holm's correction; maps finding it / maps run, over all replications",
-                20, image.getHeight() - 20);
+        g.drawString("maps finding it / maps run over all replications; bold, blue: the replication-level test (each"
+                + " replication's share, paired, Holm) shows a difference", 20, image.getHeight() - 20);
         g.dispose();
         return image;
     }

@@ -12,9 +12,9 @@ package sitcov.stats;
  * {@link Result#high} give. This is what R's {@code TOSTER::t_TOST(paired = TRUE)} and
  * {@code equivalence::tost(paired = TRUE)} compute.
  *
- * <p>Differences without spread (every pair differs by the same amount) have no standard error: the
- * mean then is what it is, equivalent (p = 0) when it lies strictly inside the margins and not (p = 1)
- * otherwise.
+ * <p>Differences without spread (every pair differs by the same amount) give no standard error to
+ * test with: the p-values are then NaN, and nothing is claimed. (On a handful of pairs identical
+ * differences are no evidence of equivalence; the caller says what they are instead.)
  */
 public final class Tost {
     private Tost() {
@@ -31,6 +31,7 @@ public final class Tost {
      * @param high its upper end
      */
     public record Result(double mean, double margin, double p, double pLower, double pUpper, double low, double high) {
+        /** Whether equivalence is shown at level {@code alpha} (never without spread). */
         public boolean equivalent(double alpha) {
             return p <= alpha;
         }
@@ -63,8 +64,7 @@ public final class Tost {
                     + margin + ", alpha=" + alpha + ", n=" + n + ", sd=" + sd);
         }
         if (sd == 0) {
-            double p = Math.abs(mean) < margin ? 0 : 1;
-            return new Result(mean, margin, p, mean > -margin ? 0 : 1, mean < margin ? 0 : 1, mean, mean);
+            return new Result(mean, margin, Double.NaN, Double.NaN, Double.NaN, mean, mean);
         }
         double df = n - 1;
         double se = sd / Math.sqrt(n);

@@ -37,9 +37,11 @@ class TostTest {
     }
 
     @Test
-    void differencesAllAlikeAreEquivalentOnlyInsideTheMargin() {
-        assertEquals(0, Tost.paired(new double[] {3, 4, 5}, new double[] {3, 4, 5}, 1, 0.05).p());
-        assertEquals(1, Tost.paired(new double[] {5, 6, 7}, new double[] {3, 4, 5}, 1, 0.05).p());
+    void differencesAllAlikeGiveNoTestAndNoClaim() {
+        Tost.Result same = Tost.paired(new double[] {3, 4, 5}, new double[] {3, 4, 5}, 1, 0.05);
+        assertTrue(Double.isNaN(same.p()));
+        assertFalse(same.equivalent(0.05));
+        assertTrue(Double.isNaN(Tost.paired(new double[] {5, 6, 7}, new double[] {3, 4, 5}, 1, 0.05).p()));
     }
 
     @Test

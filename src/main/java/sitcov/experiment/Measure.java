@@ -1,0 +1,55 @@
+package sitcov.experiment;
+
+/**
+ * The measures two drivers are compared on, each a value per driver and replication, with the
+ * margin within which two drivers count as equivalent unless a preset declares its own
+ * ({@code margin_KEY=}): a difference smaller than the margin is too small to matter.
+ */
+public enum Measure {
+    CELLS_COVERED("cells_covered", "cells covered", "cells", 5),
+    MAPS_RUN("maps_run", "maps run", "maps", 5),
+    FAULTS_FOUND("faults_found", "distinct faults found", "faults", 1),
+    AVG_MAP_FAULT("avg_map_fault", "faults found per map (avg-map-fault)", "faults a map", 0.1),
+    PROP_MAP_ALL_FAULT("prop_map_all_fault", "share of maps finding every fault (prop-map-all-fault)", "", 0.01),
+    DISCOVERY_AREA("discovery_area", "area under faults found against ticks", "", 0.02);
+
+    private final String key;
+    private final String words;
+    private final String unit;
+    private final double defaultMargin;
+
+    Measure(String key, String words, String unit, double defaultMargin) {
+        this.key = key;
+        this.words = words;
+        this.unit = unit;
+        this.defaultMargin = defaultMargin;
+    }
+
+    /** The measure's name in presets, manifests and stats.csv. */
+    public String key() {
+        return key;
+    }
+
+    public String words() {
+        return words;
+    }
+
+    /** What one unit of the measure counts ("faults"), or empty for a share. */
+    public String unit() {
+        return unit;
+    }
+
+    public double defaultMargin() {
+        return defaultMargin;
+    }
+
+    public static Measure ofKey(String key) {
+        for (Measure m : values()) {
+            if (m.key.equals(key)) {
+                return m;
+            }
+        }
+        throw new IllegalArgumentException("unknown measure '" + key + "'; the measures are "
+                + java.util.Arrays.stream(values()).map(Measure::key).toList());
+    }
+}

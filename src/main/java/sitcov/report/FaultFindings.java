@@ -1,0 +1,90 @@
+package sitcov.report;
+
+import static sitcov.report.VerdictText.p;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import sitcov.experiment.Comparison;
+import sitcov.experiment.FaultTest;
+import sitcov.experiment.Finding;
+
+/** The per-fault sentence of one pair: which faults each driver's maps find more often, and which could not be tested. */
+final class FaultFindings {
+    private FaultFindings() {
+    }
+
+    static String line(Comparison comparison, String a, String b) {
+        List<String> moreA = new ArrayList<>();
+        List<String> moreB = new ArrayList<>();
+        List<Integer> none = new ArrayList<>();
+        double lowest = Double.POSITIVE_INFINITY;
+        double highest = 0;
+        Map<String, List<Integer>> untested = new TreeMap<>();
+        for (FaultTest f : comparison.faults()) {
+            if (!f.driverA().equals(a) || !f.driverB().equals(b)) {
+                continue;
+            }
+            int id = f.fault().id();
+            switch (f.finding()) {
+                case HIGHER_A -> moreA.add(found(f));
+                case HIGHER_B -> moreB.add(found(f));
+                case INCONCLUSIVE -> {
+                    none.add(id);
+                    if (Double.isFinite(f.paired().detectable())) {
+                        lowest = Math.min(lowest, f.paired().detectable());
+                        highest = Math.max(highest, f.paired().detectable());
+                    }
+                }
+                case TOO_FEW -> untested.computeIfAbsent("too few replications differ", k -> new ArrayList<>()).add(id);
+                case NOT_TESTABLE -> untested.computeIfAbsent(f.note(), k -> new ArrayList<>()).add(id);
+                case EQUIVALENT -> throw new IllegalStateException("faults are not tested for equivalence");
+            }
+        }
+        StringBuilder s = new StringBuilder("- per fault (each replication's share of its maps finding the fault, paired"
+                + " signed-rank test, Holm-adjusted): ");
+        List<String> parts = new ArrayList<>();
+        if (!moreA.isEmpty()) {
+            parts.add("found on a larger share of " + a + "'s maps: " + String.join("; ", moreA));
+        }
+        if (!moreB.isEmpty()) {
+            parts.add("found on a larger share of " + b + "'s maps: " + String.join("; ", moreB));
+        }
+        if (!none.isEmpty()) {
+            parts.add("no difference shown for " + ids(none) + (lowest <= highest ? String.format(Locale.ROOT,
+                    " (the test could have detected %s to %s points or more)", points(lowest), points(highest)) : ""));
+        }
+        List<String> why = new ArrayList<>();
+        untested.forEach((reason, ids) -> why.add(ids(ids) + " (" + reason + ")"));
+        if (!why.isEmpty()) {
+            parts.add("not tested: " + String.join(", ", why));
+        }
+        return s.append(parts.isEmpty() ? "no faults." : String.join("; ", parts) + ".").toString();
+    }
+
+    private static String found(FaultTest f) {
+        return String.format(Locale.ROOT, "fault %d (%s %% of its maps against %s %%, %s points, CI %s to %s; Holm p = %s)",
+                f.fault().id(), percent(f.paired().meanA()), percent(f.paired().meanB()),
+                (f.paired().difference().estimate() > 0 ? "+" : "") + points(f.paired().difference().estimate()),
+                points(f.paired().difference().low()), points(f.paired().difference().high()), p(f.paired().pAdjusted()));
+    }
+
+    private static String ids(List<Integer> ids) {
+        return (ids.size() == 1 ? "fault " : "faults ") + String.join(", ", ids.stream().map(String::valueOf).toList());
+    }
+
+    private static String percent(double share) {
+        return String.format(Locale.ROOT, "%.1f", 100 * share);
+    }
+
+    /** A difference of shares in percentage points. */
+    private static String points(double share) {
+        return String.format(Locale.ROOT, "%.1f", 100 * share);
+    }
+
+    static boolean differs(Finding f) {
+        return f == Finding.HIGHER_A || f == Finding.HIGHER_B;
+    }
+}

@@ -43,7 +43,8 @@ public record AnalysisPlan(Measure primaryMeasure, List<String> primaryDrivers, 
 
     /** The defaults for a comparison of {@code drivers}: the first against the second (no primary with one driver). */
     public static AnalysisPlan defaults(List<String> drivers) {
-        return new AnalysisPlan(Measure.FAULTS_FOUND, drivers.size() < 2 ? List.of() : drivers.subList(0, 2),
+        List<String> distinct = drivers.stream().distinct().toList();
+        return new AnalysisPlan(Measure.FAULTS_FOUND, distinct.size() < 2 ? List.of() : distinct.subList(0, 2),
                 Direction.TWO_SIDED, Map.of());
     }
 

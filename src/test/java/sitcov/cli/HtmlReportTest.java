@@ -38,8 +38,10 @@ class HtmlReportTest {
         Path folder = ResultsFolders.tinyReference();
         String html = Files.readString(folder.resolve(ResultsFolder.REPORT));
         for (String line : Files.readAllLines(folder.resolve(ResultsFolder.VERDICT))) {
-            String shown = line.replaceFirst("^- ", "").replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
-            assertTrue(html.contains("<li>" + shown + "</li>"), "verdict line missing: " + line);
+            boolean item = line.startsWith("- ");
+            String shown = line.replaceFirst("^- ", "").replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+                    .replace("\"", "&quot;");
+            assertTrue(html.contains(item ? "<li>" + shown + "</li>" : "<p>" + shown + "</p>"), "verdict line missing: " + line);
         }
         long summaryRows = Files.readAllLines(folder.resolve(ResultsFolder.SUMMARY)).size();
         int start = html.indexOf("The paper's measures per replication");

@@ -107,6 +107,12 @@ class RunCommandTest {
             {"candidate_limit=3", "candidate_limit 3 is below the first driver's 12 candidates"},
             {"budget=money", "unknown budget 'money'; use wall-clock or ticks"},
             {"faulty_runs=sometimes", "unknown faulty_runs 'sometimes'; use until-verdict or to-end"},
+            {"primary_measure=speed", "primary_measure= unknown measure 'speed'; the measures are [cells_covered,"},
+            {"primary_drivers=random,best", "primary_drivers= names 'best', which is not one of the drivers"},
+            {"primary_drivers=random,random", "primary_drivers names two different drivers"},
+            {"primary_direction=up", "unknown primary_direction 'up'; use two-sided, higher or lower"},
+            {"margin_faults_found=one", "margin_faults_found= needs a positive number such as 1.0, not 'one'"},
+            {"margin_discovery_area=-0.1", "margin_discovery_area must be a positive number"},
         };
         String base = Files.readString(Path.of(ResultsFolders.TINY));
         for (String[] c : cases) {

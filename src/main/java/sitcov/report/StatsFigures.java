@@ -84,9 +84,10 @@ final class StatsFigures {
             g.setFont(new Font(Font.SANS_SERIF, differs ? Font.BOLD : Font.PLAIN, 12));
             g.drawString(String.format(Locale.ROOT, "fault %2d  %d/%d vs %d/%d", t.fault().id(), t.foundA(), t.mapsA(),
                     t.foundB(), t.mapsB()), 20, y + 4);
-            g.drawString(t.finding().tested() ? "Holm p " + VerdictText.p(t.paired().pAdjusted()) : "not tested",
+            g.drawString(t.finding().tested() ? "Holm p " + VerdictText.p(t.paired().pAdjusted())
+                    : t.finding() == sitcov.experiment.Finding.TOO_FEW ? "too few differ" : "not testable",
                     left + width + 20, y + 4);
-            if (t.note() != null) {
+            if (Double.isNaN(t.oddsRatio())) {
                 g.setColor(Color.GRAY);
                 g.drawString(t.note(), px.applyAsInt(1) + 8, y + 4);
                 continue;

@@ -10,6 +10,7 @@ import java.util.TreeMap;
 import sitcov.experiment.Comparison;
 import sitcov.experiment.FaultTest;
 import sitcov.experiment.Finding;
+import sitcov.experiment.PairedDifference;
 
 /** The per-fault sentence of one pair: which faults each driver's maps find more often, and which could not be tested. */
 final class FaultFindings {
@@ -64,11 +65,17 @@ final class FaultFindings {
         return s.append(parts.isEmpty() ? "no faults." : String.join("; ", parts) + ".").toString();
     }
 
+    /** "fault 16 (59.8 % of fault-search's maps against 38.7 % of random's, +21.3 points, CI …)": the higher first. */
     private static String found(FaultTest f) {
-        return String.format(Locale.ROOT, "fault %d (%s %% of its maps against %s %%, %s points, CI %s to %s; Holm p = %s)",
-                f.fault().id(), percent(f.paired().meanA()), percent(f.paired().meanB()),
-                (f.paired().difference().estimate() > 0 ? "+" : "") + points(f.paired().difference().estimate()),
-                points(f.paired().difference().low()), points(f.paired().difference().high()), p(f.paired().pAdjusted()));
+        PairedDifference d = f.paired();
+        boolean a = f.finding() == Finding.HIGHER_A;
+        double sign = a ? 1 : -1;
+        double low = a ? d.difference().low() : -d.difference().high();
+        double high = a ? d.difference().high() : -d.difference().low();
+        return String.format(Locale.ROOT, "fault %d (%s %% of %s's maps against %s %% of %s's, +%s points, CI %s to %s;"
+                + " Holm p = %s)", f.fault().id(), percent(a ? d.meanA() : d.meanB()), a ? f.driverA() : f.driverB(),
+                percent(a ? d.meanB() : d.meanA()), a ? f.driverB() : f.driverA(), points(sign * d.difference().estimate()),
+                points(low), points(high), p(d.pAdjusted()));
     }
 
     private static String ids(List<Integer> ids) {

@@ -20,7 +20,7 @@ import sitcov.stats.Descriptive;
 
 /**
  * The figures of the statistics: per-fault odds ratios of the pooled maps with their CIs (a forest
- * plot of the first pair of drivers, descriptive; bold where the replication-level test shows a difference), each measure's replications by driver (strip plots with the median), and distinct
+ * plot of the primary question's pair of drivers, descriptive; bold where the replication-level test shows a difference), each measure's replications by driver (strip plots with the median), and distinct
  * faults found against ticks (median and quartile band over replications).
  */
 final class StatsFigures {
@@ -47,9 +47,11 @@ final class StatsFigures {
     }
 
     static BufferedImage oddsRatios(Summary summary, Comparison comparison) {
+        // the primary question's pair (the first two drivers unless the preset names another)
+        List<String> pair = comparison.plan().hasPrimary() ? comparison.plan().primaryDrivers()
+                : summary.drivers().subList(0, Math.min(2, summary.drivers().size()));
         List<FaultTest> tests = comparison.faults().stream()
-                .filter(t -> t.driverA().equals(summary.drivers().get(0))
-                        && t.driverB().equals(summary.drivers().size() > 1 ? summary.drivers().get(1) : ""))
+                .filter(t -> pair.contains(t.driverA()) && pair.contains(t.driverB()))
                 .toList();
         int rowHeight = 22;
         int top = 80;

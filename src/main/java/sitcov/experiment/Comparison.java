@@ -279,8 +279,13 @@ public final class Comparison {
 
     /** Why a difference was not tested: the smallest p its signed-rank test could give is in stats.csv. */
     private static String tooFew(PairedDifference d) {
-        return d.differing() == d.replications() ? "too few replications"
+        return tooFewReplications(d.replications()) || d.differing() == d.replications() ? "too few replications"
                 : "only " + d.differing() + " of " + d.replications() + " replications differ";
+    }
+
+    /** Whether n paired replications are too few for any two-sided signed-rank test to reach the level: 2/2ⁿ ≥ α. */
+    public static boolean tooFewReplications(int n) {
+        return 2 / Math.pow(2, Math.max(0, n)) >= AnalysisPlan.ALPHA;
     }
 
     /**

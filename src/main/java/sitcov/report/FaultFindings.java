@@ -39,7 +39,8 @@ final class FaultFindings {
                         highest = Math.max(highest, f.paired().detectable());
                     }
                 }
-                case TOO_FEW -> untested.computeIfAbsent("too few replications differ", k -> new ArrayList<>()).add(id);
+                case TOO_FEW -> untested.computeIfAbsent(Comparison.tooFewReplications(f.paired().replications())
+                        ? "too few replications" : "too few replications differ", k -> new ArrayList<>()).add(id);
                 case NOT_TESTABLE -> untested.computeIfAbsent(f.note(), k -> new ArrayList<>()).add(id);
                 case EQUIVALENT -> throw new IllegalStateException("faults are not tested for equivalence");
             }

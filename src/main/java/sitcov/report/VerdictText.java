@@ -66,10 +66,10 @@ final class VerdictText {
 
     /** The caveat of too few replications for any signed-rank test, said once; empty when there is none. */
     static Optional<String> fewReplications(int n) {
-        double smallest = Math.min(1, 2 / Math.pow(2, Math.max(0, n)));
-        if (smallest < ALPHA) {
+        if (!Comparison.tooFewReplications(n)) {
             return Optional.empty();
         }
+        double smallest = Math.min(1, 2 / Math.pow(2, Math.max(0, n)));
         return Optional.of(String.format(Locale.ROOT, "Too few replications to test: with %d paired replications no"
                 + " signed-rank test can reach p < %s (its smallest two-sided p is 2/2^%d = %s), so the CIs and Â12 below"
                 + " describe the differences, they do not test them. Run at least 6 with --replications N (30 is the"

@@ -17,7 +17,7 @@ import sitcov.geom.Rect;
 import sitcov.geom.Vec2;
 
 /**
- * The rules every generated map keeps (SPEC §3). {@link #check} lists each broken rule with the
+ * The rules every generated map keeps (README, "Maps and situation files"). {@link #check} lists each broken rule with the
  * element that breaks it; an empty list means the map is well formed.
  */
 public final class Invariants {

@@ -20,7 +20,7 @@ import sitcov.world.WorldMap;
 /**
  * {@code bench}: how fast sitcov is on this machine, on one thread, after a warm-up: simulated
  * ticks and runs per second over fault-free runs of maps 1..K, and candidate maps (layouts, what
- * the coverage driver generates per candidate) per second. Prints the SPEC §10 targets beside.
+ * the coverage driver generates per candidate) per second. Prints the speed targets (README, "Simulating one run") beside.
  * The only command that reads the clock for its results: timing is its point.
  */
 final class BenchCommand implements Command {
@@ -125,7 +125,7 @@ final class BenchCommand implements Command {
         double per20000 = layoutSeconds * DEFAULT_CANDIDATES / candidates;
         out.printf(Locale.ROOT, "sitcov bench: one thread, after a warm-up of %d runs and %d candidate maps%n%n",
                 warmRuns, warmCandidates);
-        out.printf(Locale.ROOT, "  %-36s %12s   %s%n", "measure", "figure", "SPEC 10 target");
+        out.printf(Locale.ROOT, "  %-36s %12s   %s%n", "measure", "figure", "target");
         line(out, "simulated ticks per second", String.format(Locale.ROOT, "%.0f", ticks / runSeconds),
                 ">= 125000 (follows from the tick time)");
         line(out, "microseconds per tick", String.format(Locale.ROOT, "%.2f", microsPerTick),

@@ -325,15 +325,8 @@ public final class Comparison {
         for (int r = 0; r < v.length; r++) {
             ReplicationResult rep = results.get(r);
             Metrics m = summary.metrics(rep.replication(), driver, false);
-            v[r] = switch (measure) {
-                case CELLS_COVERED -> m.cells();
-                case MAPS_RUN -> m.maps();
-                case FAULTS_FOUND -> m.faultsFound();
-                case AVG_MAP_FAULT -> m.avgMapFault();
-                case PROP_MAP_ALL_FAULT -> m.propMapAllFault();
-                case DISCOVERY_AREA -> Discovery.of(rep.of(driver), summary.faults()).area(
-                        rep.drivers().stream().mapToLong(d -> d.spend().ticks()).min().orElse(0));
-            };
+            v[r] = measure.of(m, Discovery.of(rep.of(driver), summary.faults()).area(
+                    rep.drivers().stream().mapToLong(d -> d.spend().ticks()).min().orElse(0)));
         }
         return v;
     }

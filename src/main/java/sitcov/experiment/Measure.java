@@ -43,6 +43,18 @@ public enum Measure {
         return defaultMargin;
     }
 
+    /** This measure of one driver's maps ({@code m}), with {@code area} the area under its discovery curve. */
+    double of(Metrics m, double area) {
+        return switch (this) {
+            case CELLS_COVERED -> m.cells();
+            case MAPS_RUN -> m.maps();
+            case FAULTS_FOUND -> m.faultsFound();
+            case AVG_MAP_FAULT -> m.avgMapFault();
+            case PROP_MAP_ALL_FAULT -> m.propMapAllFault();
+            case DISCOVERY_AREA -> area;
+        };
+    }
+
     public static Measure ofKey(String key) {
         for (Measure m : values()) {
             if (m.key.equals(key)) {

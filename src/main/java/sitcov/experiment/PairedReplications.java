@@ -50,15 +50,9 @@ final class PairedReplications {
                         long[][] found, long[] maps) {
         List<MapRun> compared = budget == BudgetKind.TICKS ? within(run.maps(), horizon) : run.maps();
         Metrics m = Metrics.of(compared, faults, false);
+        double area = Discovery.of(run, faults).area(horizon);
         for (Measure measure : Measure.values()) {
-            measures[measure.ordinal()][r] = switch (measure) {
-                case CELLS_COVERED -> m.cells();
-                case MAPS_RUN -> m.maps();
-                case FAULTS_FOUND -> m.faultsFound();
-                case AVG_MAP_FAULT -> m.avgMapFault();
-                case PROP_MAP_ALL_FAULT -> m.propMapAllFault();
-                case DISCOVERY_AREA -> Discovery.of(run, faults).area(horizon);
-            };
+            measures[measure.ordinal()][r] = measure.of(m, area);
         }
         maps[r] = compared.size();
         for (MapRun map : compared) {

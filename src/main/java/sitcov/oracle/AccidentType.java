@@ -1,6 +1,6 @@
 package sitcov.oracle;
 
-/** The kinds of accident the oracle detects (SPEC §6). */
+/** The kinds of accident the oracle detects (README, "The car under test, the traffic and the oracle"). */
 public enum AccidentType {
     /** The car's footprint overlaps a parked car. */
     CLASHWITHOBSTACLE,

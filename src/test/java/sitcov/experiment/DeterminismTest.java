@@ -18,7 +18,7 @@ import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
 
 /**
- * SPEC §2: both seeds fix a run bit for bit, on any thread count. Traces hold the pose of every
+ * Both seeds fix a run bit for bit, on any thread count. Traces hold the pose of every
  * active vehicle (the autonomous car first) after every tick; records compare doubles bit for bit.
  */
 class DeterminismTest {

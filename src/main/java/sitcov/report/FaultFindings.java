@@ -1,5 +1,6 @@
 package sitcov.report;
 
+import static sitcov.report.VerdictText.ids;
 import static sitcov.report.VerdictText.p;
 
 import java.util.ArrayList;
@@ -77,10 +78,6 @@ final class FaultFindings {
                 + " Holm p = %s)", f.fault().id(), percent(a ? d.meanA() : d.meanB()), a ? f.driverA() : f.driverB(),
                 percent(a ? d.meanB() : d.meanA()), a ? f.driverB() : f.driverA(), points(sign * d.difference().estimate()),
                 points(low), points(high), p(d.pAdjusted()));
-    }
-
-    private static String ids(List<Integer> ids) {
-        return (ids.size() == 1 ? "fault " : "faults ") + String.join(", ", ids.stream().map(String::valueOf).toList());
     }
 
     private static String percent(double share) {

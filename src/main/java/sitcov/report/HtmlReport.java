@@ -3,11 +3,7 @@ package sitcov.report;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
-import java.util.Map;
-import java.util.TreeMap;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapRun;
 
@@ -19,20 +15,27 @@ import sitcov.experiment.MapRun;
  * shows exactly what the files hold.
  */
 final class HtmlReport {
-    /** Maps listed per fault; the rest are in runs.csv. */
-    static final int MAPS_PER_FAULT = 10;
     private static final String CSS = """
             body{font-family:system-ui,-apple-system,'Segoe UI',sans-serif;max-width:1100px;margin:0 auto;padding:1em;\
             color:#1e1e1e;line-height:1.45}
-            h1{font-size:1.6em;margin-bottom:.2em}h2{margin-top:1.6em;border-bottom:1px solid #ccc}
-            .scroll{overflow-x:auto}table{border-collapse:collapse;font-size:.85em;margin:.5em 0}
-            th,td{border:1px solid #ccc;padding:.2em .45em;text-align:right;white-space:nowrap}
-            th{background:#f3f1ec}td:first-child,th:first-child{text-align:left}
+            h1{font-size:1.6em;margin-bottom:.2em}h2{margin-top:1.6em;border-bottom:1px solid #ccc}h3{margin:1.2em 0 .3em}
+            table{border-collapse:collapse;font-size:.85em;margin:.5em 0}caption{text-align:left;font-weight:600;padding:.2em 0}
+            th,td{border:1px solid #ccc;padding:.2em .45em;text-align:left;vertical-align:top}
+            th{background:#f3f1ec;font-weight:600}table.stack td:nth-child(-n+2){min-width:8em}.n{text-align:right;white-space:nowrap;font-variant-numeric:tabular-nums}
+            .key{display:block;font-weight:400;font-size:.8em;color:#777}
             img{max-width:100%;height:auto;border:1px solid #ddd;margin:.4em 0}
-            code{background:#f3f1ec;padding:0 .25em;font-size:.85em;word-break:break-all}
-            .verdict li{margin:.3em 0}.slices{display:flex;flex-wrap:wrap;gap:1em}
-            .slices td{width:2.2em;height:1.5em;text-align:center}.muted{color:#666}
-            @media print{body{max-width:none}h2{page-break-after:avoid}img,table{page-break-inside:avoid}}
+            code{background:#f3f1ec;padding:0 .25em;font-size:.85em}code.cmd span{white-space:nowrap}
+            .verdict li{margin:.3em 0}.slices{display:flex;flex-wrap:wrap;gap:.8em}
+            table.grid{font-size:.75em}table.grid td{min-width:2em;text-align:center}table.grid th{font-weight:400}
+            .muted{color:#666}details{margin:.5em 0}summary{cursor:pointer;color:#245}
+            @media (max-width:640px){table.stack,table.stack tbody,table.stack tr,table.stack td{display:block}\
+            table.stack thead{display:none}table.stack caption{display:block}table.stack tr{border:1px solid #ccc;margin:.5em 0}\
+            table.stack td{border:none;border-bottom:1px solid #eee;text-align:left;white-space:normal}\
+            table.stack td::before{content:attr(data-label) ": ";font-weight:600;color:#555}}
+            @media print{body{max-width:none;padding:0;font-size:10pt}h2,h3{break-after:avoid}\
+            img,tr,li{break-inside:avoid}table{font-size:8pt}a{color:inherit}\
+            *{-webkit-print-color-adjust:exact;print-color-adjust:exact}}
+            @page{margin:1.2cm}
             """;
 
     private HtmlReport() {
@@ -53,28 +56,26 @@ final class HtmlReport {
         h.append("<h2>Verdict</h2><div class=\"verdict\">");
         verdict(h, lines(folder, ResultsFolder.VERDICT));
         h.append("</div>\n");
-        section(h, "The paper's measures per replication", folder, ResultsFolder.SUMMARY);
-        stats(h, lines(folder, ResultsFolder.STATS));
-        section(h, "Table 2: the share of maps finding each fault", folder, ResultsFolder.TABLE2);
-        h.append("<h2>Figures</h2>\n");
+        ReportMeasures.append(h, CsvTable.read(folder.resolve(ResultsFolder.SUMMARY)));
+        ReportStats.append(h, CsvTable.read(folder.resolve(ResultsFolder.STATS)), config.faultList());
+        ReportFaultTables.table2(h, CsvTable.read(folder.resolve(ResultsFolder.TABLE2)), config.drivers());
+        h.append("<h2>Figures</h2><p class=\"muted\">each opens at full size</p>\n");
         for (String fig : figures(folder)) {
-            h.append("<p><img src=\"").append(esc(fig)).append("\" alt=\"").append(esc(fig)).append("\"></p>\n");
+            h.append("<p><a href=\"").append(esc(fig)).append("\"><img src=\"").append(esc(fig)).append("\" alt=\"")
+                    .append(esc(fig)).append("\"></a></p>\n");
         }
-        grid(h, folder, config);
-        faults(h, folder, config, inOrder);
-        section(h, "Situations against faults: the uniformity test", folder, ResultsFolder.UNIFORMITY);
+        ReportGrid.append(h, config.grid(), config.drivers(), inOrder);
+        ReportFaultMaps.append(h, folder, config, inOrder, version(folder));
+        ReportFaultTables.uniformity(h, CsvTable.read(folder.resolve(ResultsFolder.UNIFORMITY)), config.faultList());
         h.append("<p class=\"muted\">Every table above is a CSV file in this folder; runs.csv has one row per"
                 + " simulated run.</p></body></html>\n");
         return h.toString();
     }
 
-    private static void section(StringBuilder h, String title, Path folder, String csv) throws IOException {
-        h.append("<h2>").append(esc(title)).append("</h2><p class=\"muted\">from <a href=\"").append(csv).append("\">")
-                .append(csv).append("</a></p>");
-        table(h, lines(folder, csv));
-    }
-
-    /** The verdict's lines: items ("- ...") as a list under the line before them, the rest as paragraphs. */
+    /**
+     * The verdict's lines: headings ("## ...") as headings, "In short: ..." in bold, items ("- ...") as
+     * a list under the line before them, the rest as paragraphs.
+     */
     private static void verdict(StringBuilder h, List<String> lines) {
         boolean inList = false;
         for (String line : lines) {
@@ -85,129 +86,35 @@ final class HtmlReport {
                 h.append("</ul>");
             }
             inList = item;
-            h.append(item ? "<li>" : "<p>").append(esc(item ? line.substring(2) : line)).append(item ? "</li>" : "</p>");
+            if (item) {
+                h.append("<li>").append(esc(line.substring(2))).append("</li>");
+            } else if (line.startsWith(PairSummary.HEADING)) {
+                h.append("<h3>").append(esc(line.substring(PairSummary.HEADING.length()))).append("</h3>");
+            } else if (line.startsWith(PairSummary.IN_SHORT)) {
+                h.append("<p><strong>").append(esc(line)).append("</strong></p>");
+            } else {
+                h.append("<p>").append(esc(line)).append("</p>");
+            }
         }
         h.append(inList ? "</ul>" : "");
     }
 
-    private static final List<String> MEASURE_COLUMNS = List.of("name", "driver_a", "driver_b", "role", "finding", "mean_a",
-            "mean_b", "difference", "ci_low", "ci_high", "p_adjusted", "detectable_80", "margin", "p_tost_adjusted",
-            "a12_unpaired", "note");
-    private static final List<String> FAULT_COLUMNS = List.of("name", "driver_a", "driver_b", "finding", "mean_a", "mean_b",
-            "difference", "ci_low", "ci_high", "p_adjusted", "dispersion_a", "dispersion_b", "found_a", "maps_a", "found_b",
-            "maps_b", "p_fisher_pooled", "odds_ratio_pooled", "note");
-
-    /** stats.csv as two tables, measures and faults, each with the columns that matter for it. */
-    private static void stats(StringBuilder h, List<String> rows) {
-        h.append("<h2>Statistics of every pair of drivers</h2><p class=\"muted\">from <a href=\"").append(ResultsFolder.STATS)
-                .append("\">").append(ResultsFolder.STATS).append("</a> (all its columns there); difference = driver_a minus"
-                + " driver_b over paired replications, for a fault of each replication's share of maps finding it;"
-                + " p_adjusted is Holm-adjusted over the exploratory family (the primary test's own p for the primary);"
-                + " the pooled Fisher p and odds ratio only describe</p>");
-        if (rows.isEmpty()) {
-            return;
+    /** A shell command as code that wraps only between its words, never inside one. */
+    static String command(String command) {
+        StringBuilder c = new StringBuilder("<code class=\"cmd\">");
+        String[] words = command.split(" ");
+        for (int i = 0; i < words.length; i++) {
+            c.append(i == 0 ? "" : " ").append("<span>").append(esc(words[i])).append("</span>");
         }
-        List<String> header = List.of(rows.get(0).split(",", -1));
-        for (String kind : List.of("measure", "fault")) {
-            List<String> columns = kind.equals("measure") ? MEASURE_COLUMNS : FAULT_COLUMNS;
-            List<String> kept = new ArrayList<>();
-            kept.add(String.join(",", columns));
-            for (String r : rows.subList(1, rows.size())) {
-                List<String> v = List.of(r.split(",", -1));
-                if (v.get(0).equals(kind)) {
-                    kept.add(String.join(",", columns.stream().map(c -> v.get(header.indexOf(c))).toList()));
-                }
-            }
-            table(h, kept);
-        }
+        return c.append("</code>").toString();
     }
 
-    private static void table(StringBuilder h, List<String> rows) {
-        h.append("<div class=\"scroll\"><table>");
-        for (int i = 0; i < rows.size(); i++) {
-            String cell = i == 0 ? "th" : "td";
-            h.append("<tr>");
-            for (String v : rows.get(i).split(",", -1)) {
-                h.append('<').append(cell).append('>').append(esc(v)).append("</").append(cell).append('>');
-            }
-            h.append("</tr>");
-        }
-        h.append("</table></div>\n");
-    }
-
-    /** The grid's maps per cell as slices along its first criterion (a grid of three criteria). */
-    private static void grid(StringBuilder h, Path folder, ExperimentConfig config) throws IOException {
-        h.append("<h2>Coverage grid: distinct maps run per cell</h2>");
-        var bins = config.grid().bins();
-        if (bins.size() != 3) {
-            h.append("<p>The grid has ").append(bins.size()).append(" criteria; its cells are listed in <a href=\"")
-                    .append(ResultsFolder.CELL_FAULTS).append("\">").append(ResultsFolder.CELL_FAULTS).append("</a>.</p>");
-            return;
-        }
-        Map<Integer, String> maps = new TreeMap<>();
-        List<String> rows = lines(folder, ResultsFolder.CELL_FAULTS);
-        for (String r : rows.subList(1, rows.size())) {
-            String[] v = r.split(",");
-            maps.put(Integer.parseInt(v[0]), v[1]);
-        }
-        var names = config.grid().criteria();
-        int a = bins.get(0).count();
-        int b = bins.get(1).count();
-        int c = bins.get(2).count();
-        h.append("<p class=\"muted\">one slice per bin of ").append(esc(names.get(0).key())).append("; rows: bins of ")
-                .append(esc(names.get(1).key())).append(", columns: bins of ").append(esc(names.get(2).key()))
-                .append("; empty: never run</p><div class=\"slices\">");
-        for (int i = 0; i < a; i++) {
-            h.append("<table><tr><th colspan=\"").append(c).append("\">").append(esc(names.get(0).key())).append(" bin ")
-                    .append(i).append("</th></tr>");
-            for (int j = 0; j < b; j++) {
-                h.append("<tr>");
-                for (int k = 0; k < c; k++) {
-                    h.append("<td>").append(maps.getOrDefault(i * b * c + j * c + k, "")).append("</td>");
-                }
-                h.append("</tr>");
-            }
-            h.append("</table>");
-        }
-        h.append("</div>\n");
-    }
-
-    /** For each fault, the first maps that found it, each with its row of runs.csv and the command replaying it. */
-    private static void faults(StringBuilder h, Path folder, ExperimentConfig config, List<MapRun> inOrder) {
-        h.append("<h2>Maps that found each fault</h2><p class=\"muted\">DIR is this folder; the replay draws the"
-                + " fault-free run and the faulty one side by side (add --gif FILE to watch them)</p>");
-        var faults = config.faultList();
-        int perMap = 1 + faults.size();
-        for (int f = 0; f < faults.size(); f++) {
-            List<String> found = new ArrayList<>();
-            int total = 0;
-            for (int m = 0; m < inOrder.size(); m++) {
-                MapRun run = inOrder.get(m);
-                var outcome = run.faults().get(f);
-                if (outcome.found(false)) {
-                    total++;
-                    if (found.size() < MAPS_PER_FAULT) {
-                        int row = m * perMap + f + 2;
-                        found.add(String.format(Locale.ROOT, "<li>replication %d, %s, map %d (%s): %s at row %d — <code>"
-                                + "sitcov replay DIR --row %d --png replay.png</code></li>", run.replication(), esc(run.driver()),
-                                run.mapIndex(), esc(run.map().text()), outcome.newAccident().map(Enum::name).orElse("FOUND"),
-                                row, row));
-                    }
-                }
-            }
-            h.append("<h3>fault ").append(faults.get(f).id()).append(" · ").append(esc(faults.get(f).label()))
-                    .append("</h3><p>found on ").append(total).append(" of ").append(inOrder.size()).append(" maps")
-                    .append(total > found.size() ? " (the first " + found.size() + " listed)" : "").append("</p>");
-            if (!found.isEmpty()) {
-                h.append("<ul>").append(String.join("", found)).append("</ul>");
-            }
-            Path picture = ReplayGallery.picture(folder, faults.get(f));
-            if (Files.isRegularFile(picture)) {
-                String name = ReplayGallery.FOLDER + "/" + picture.getFileName();
-                h.append("<p>The first of them, replayed (left without the fault, right with it):<br><a href=\"").append(name)
-                        .append("\"><img src=\"").append(name).append("\" alt=\"replay of the first map that found fault ")
-                        .append(faults.get(f).id()).append("\"></a></p>");
-            }
+    /** The version of sitcov that wrote the folder, for the jar's name in replay commands. */
+    private static String version(Path folder) {
+        try {
+            return Manifest.read(folder).version();
+        } catch (IOException | RuntimeException e) {
+            return "VERSION";
         }
     }
 

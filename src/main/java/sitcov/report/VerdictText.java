@@ -36,20 +36,47 @@ final class VerdictText {
             out.add("Answer: " + PrimaryAnswer.of(primary.get(), comparison.plan()));
         }
         fewReplications(comparison.replications()).ifPresent(out::add);
+        unreachable(comparison).ifPresent(out::add);
         out.add(howToRead(comparison, budget));
         List<MeasureTest> all = comparison.measures();
-        for (int i = 0; i < all.size(); i += sitcov.experiment.Measure.values().length) {
-            List<MeasureTest> pair = all.subList(i, i + sitcov.experiment.Measure.values().length);
-            out.add(PairSummary.heading(pair, comparison.replications()));
+        int perPair = sitcov.experiment.Measure.values().length;
+        for (int i = 0; i < all.size(); i += perPair) {
+            List<MeasureTest> pair = all.subList(i, i + perPair);
+            String a = pair.get(0).driverA();
+            String b = pair.get(0).driverB();
+            out.add(PairSummary.heading(a, b, comparison.replications()));
+            out.add(PairSummary.inShort(pair, comparison.faults().stream()
+                    .filter(f -> f.driverA().equals(a) && f.driverB().equals(b)).toList()));
             for (MeasureTest m : pair) {
                 out.add(measure(m));
             }
-            out.add(FaultFindings.line(comparison, pair.get(0).driverA(), pair.get(0).driverB()));
+            out.add(FaultFindings.line(comparison, a, b));
         }
         if (!uniformity.isEmpty()) {
+            out.add(PairSummary.HEADING + "Situations against faults (the paper's uniformity hypothesis)");
             out.add(uniformity(uniformity));
         }
         return out;
+    }
+
+    /**
+     * The caveat of tests that no difference could have passed at this n (the smallest p of their
+     * signed-rank test is above the Holm level they were held to), said once for all of them.
+     */
+    static Optional<String> unreachable(Comparison c) {
+        long measures = c.measures().stream().filter(m -> !m.primary() && m.finding() == Finding.INCONCLUSIVE
+                && Double.isInfinite(m.paired().detectable())).count();
+        long faults = c.faults().stream().filter(f -> f.finding() == Finding.INCONCLUSIVE
+                && Double.isInfinite(f.paired().detectable())).count();
+        if (measures + faults == 0 || Comparison.tooFewReplications(c.replications())) {
+            return Optional.empty();
+        }
+        return Optional.of(String.format(Locale.ROOT, "Not enough replications for the exploratory family: at %d paired replications"
+                + " the smallest p a signed-rank test can give (%s) is above the Holm level to which %d of the exploratory"
+                + " tests below were held (%d of measures, %d per fault), so their \"inconclusive\" says only that no"
+                + " difference, however large, could have been shown there. Run more replications (--replications N; 30 is"
+                + " the usual minimum).", c.replications(), p(2 / Math.pow(2, c.replications())), measures + faults,
+                measures, faults));
     }
 
     private static String question(AnalysisPlan plan, BudgetKind budget) {
@@ -135,36 +162,76 @@ final class VerdictText {
     }
 
     static String detectable(PairedDifference d) {
-        if (Double.isInfinite(d.detectable())) {
-            return "; at this n no difference could have reached the level the test was held to";
-        }
-        return Double.isNaN(d.detectable()) ? "" : "; it could have detected a difference of " + number(d.detectable())
+        return !Double.isFinite(d.detectable()) ? "" : "; it could have detected a difference of " + number(d.detectable())
                 + " or more";
     }
 
-    private static String uniformity(List<SituationFaults.Uniformity> tests) {
+    /** Faults found (or missed) on fewer distinct maps than this are too rare for the uniformity test to say anything. */
+    static final int UNIFORMITY_MIN_MAPS = 5;
+
+    static final String TOO_RARE = "found on fewer than " + UNIFORMITY_MIN_MAPS + " maps";
+    static final String TOO_RARELY_MISSED = "missed on fewer than " + UNIFORMITY_MIN_MAPS + " maps";
+
+    /** Why a fault found on {@code found} of {@code maps} distinct maps is left out of the uniformity average, if it is. */
+    static Optional<String> leftOut(int found, int maps) {
+        if (found == 0) {
+            return Optional.of("never found");
+        }
+        if (found == maps) {
+            return Optional.of("found on every map");
+        }
+        if (found < UNIFORMITY_MIN_MAPS) {
+            return Optional.of(TOO_RARE);
+        }
+        return maps - found < UNIFORMITY_MIN_MAPS ? Optional.of(TOO_RARELY_MISSED) : Optional.empty();
+    }
+
+    static String uniformity(List<SituationFaults.Uniformity> tests) {
         double explained = 0;
         double chance = 0;
-        int counted = 0;
+        List<Integer> counted = new ArrayList<>();
+        List<Integer> rare = new ArrayList<>();
+        List<Integer> common = new ArrayList<>();
         int beyond = 0;
         for (SituationFaults.Uniformity u : tests) {
-            if (u.found() == 0 || u.found() == u.maps()) {
+            Optional<String> out = leftOut(u.found(), u.maps());
+            if (out.isPresent()) {
+                if (out.get().equals(TOO_RARE)) {
+                    rare.add(u.fault().id());
+                } else if (out.get().equals(TOO_RARELY_MISSED)) {
+                    common.add(u.fault().id());
+                }
                 continue;
             }
-            counted++;
+            counted.add(u.fault().id());
             explained += u.explained();
             chance += u.byChance();
             beyond += u.p() < ALPHA ? 1 : 0;
         }
-        if (counted == 0) {
-            return "Situations against faults: no fault was found on some maps and missed on others, so the cells"
-                    + " cannot be tested as equivalence classes.";
+        int maps = tests.get(0).maps();
+        List<String> left = new ArrayList<>();
+        if (!rare.isEmpty()) {
+            left.add(ids(rare) + " (" + TOO_RARE + ")");
         }
-        return String.format(Locale.ROOT, "Situations against faults (the paper's uniformity hypothesis): the coverage"
-                + " cell explains on average %.1f %% of the variation in whether a map finds a fault, against %.1f %% when"
-                + " the same maps are dealt to cells at random; for %d of the %d faults found on some maps but not all,"
-                + " more than chance (permutation p < %.2f, not adjusted).", 100 * explained / counted,
-                100 * chance / counted, beyond, counted, ALPHA);
+        if (!common.isEmpty()) {
+            left.add(ids(common) + " (" + TOO_RARELY_MISSED + ")");
+        }
+        String leftOut = left.isEmpty() ? "" : " Left out as too rare to test: " + String.join(", ", left) + ".";
+        if (counted.isEmpty()) {
+            return String.format(Locale.ROOT, "Over the %d distinct maps run (a map run by several drivers counted once),"
+                    + " no fault was found on %d or more maps and missed on %d or more, so the cells cannot be tested as"
+                    + " equivalence classes.", maps, UNIFORMITY_MIN_MAPS, UNIFORMITY_MIN_MAPS) + leftOut;
+        }
+        return String.format(Locale.ROOT, "Over the %d distinct maps run (a map run by several drivers counted once), for"
+                + " the %d faults found on some maps but not all (%s), the coverage cell explains on average %.1f %% of"
+                + " the variation in whether a map finds the fault, against %.1f %% when the same maps are dealt to cells"
+                + " at random; for %d of them more than chance (permutation p < %s, not adjusted).", maps, counted.size(),
+                ids(counted), 100 * explained / counted.size(), 100 * chance / counted.size(), beyond, plain(ALPHA))
+                + leftOut;
+    }
+
+    static String ids(List<Integer> ids) {
+        return (ids.size() == 1 ? "fault " : "faults ") + String.join(", ", ids.stream().map(String::valueOf).toList());
     }
 
     static String number(double v) {

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import sitcov.report.ResultsFolder;
 
 /** The report.html of a results folder, read as a browser would: what it links to must be there. */
@@ -34,19 +35,86 @@ class HtmlReportTest {
     }
 
     @Test
-    void theReportShowsTheVerdictAndOneRowPerRunOfEachTable() throws Exception {
+    void theReportShowsEachVerdictLineAsHeadingBottomLineItemOrParagraph() throws Exception {
         Path folder = ResultsFolders.tinyReference();
         String html = Files.readString(folder.resolve(ResultsFolder.REPORT));
-        for (String line : Files.readAllLines(folder.resolve(ResultsFolder.VERDICT))) {
-            boolean item = line.startsWith("- ");
-            String shown = line.replaceFirst("^- ", "").replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
-                    .replace("\"", "&quot;");
-            assertTrue(html.contains(item ? "<li>" + shown + "</li>" : "<p>" + shown + "</p>"), "verdict line missing: " + line);
+        List<String> verdict = Files.readAllLines(folder.resolve(ResultsFolder.VERDICT));
+        assertTrue(verdict.stream().anyMatch(l -> l.startsWith("## coverage-filter against random")), verdict.toString());
+        for (String line : verdict) {
+            String shown = esc(line.replaceFirst("^(- |## )", ""));
+            String expected = line.startsWith("- ") ? "<li>" + shown + "</li>" : line.startsWith("## ") ? "<h3>" + shown
+                    + "</h3>" : line.startsWith("In short: ") ? "<p><strong>" + shown + "</strong></p>" : "<p>" + shown + "</p>";
+            assertTrue(html.contains(expected), "verdict line missing: " + line);
         }
-        long summaryRows = Files.readAllLines(folder.resolve(ResultsFolder.SUMMARY)).size();
-        int start = html.indexOf("The paper's measures per replication");
-        int end = html.indexOf("</table>", start);
-        assertEquals(summaryRows, html.substring(start, end).split("<tr>", -1).length - 1, "a table row per CSV row");
         assertEquals(html.indexOf("<script"), -1, "no script");
+    }
+
+    @Test
+    void everyTableFitsAPrintedPageAndLabelsItsCellsForANarrowScreen() throws Exception {
+        String html = Files.readString(ResultsFolders.tinyReference().resolve(ResultsFolder.REPORT));
+        Matcher table = Pattern.compile("<table class=\"stack\">(.*?)</table>", Pattern.DOTALL).matcher(html);
+        int tables = 0;
+        while (table.find()) {
+            tables++;
+            String t = table.group(1);
+            int headings = t.substring(0, t.indexOf("</thead>")).split("<th[ >]", -1).length - 1;
+            assertTrue(headings <= 9, headings + " columns do not fit a printed page: " + t.substring(0, 300));
+            int cells = t.split("<td", -1).length - 1;
+            assertEquals(cells, t.split("<td[^>]*data-label=", -1).length - 1, "a cell without its column's label");
+        }
+        assertTrue(tables >= 6, "measures, replications, two per pair, Table 2, uniformity: " + tables);
+    }
+
+    @Test
+    void numbersAreWrittenForPeopleNotAsTheCsvHoldsThem() throws Exception {
+        Path folder = ResultsFolders.tinyReference();
+        String html = Files.readString(folder.resolve(ResultsFolder.REPORT));
+        assertTrue(Files.readString(folder.resolve(ResultsFolder.STATS)).matches("(?s).*\\d\\.\\d{5}.*"),
+                "the CSV holds long decimals, so this test could fail");
+        Matcher cell = Pattern.compile("<td[^>]*>([^<]*)</td>").matcher(html);
+        int cells = 0;
+        while (cell.find()) {
+            cells++;
+            assertFalse(cell.group(1).matches(".*\\d\\.\\d{4,}.*"), "too many places: " + cell.group(1));
+        }
+        assertTrue(cells > 50, "cells read: " + cells);
+    }
+
+    @Test
+    void theSummaryIsFoldedBelowMeansOneRowPerReplicationAndNotion() throws Exception {
+        Path folder = ResultsFolders.tinyReference();
+        String html = Files.readString(folder.resolve(ResultsFolder.REPORT));
+        long summaryRows = Files.readAllLines(folder.resolve(ResultsFolder.SUMMARY)).size() - 1;
+        int start = html.indexOf("<details>");
+        int end = html.indexOf("</details>", start);
+        assertEquals(summaryRows, html.substring(start, end).split("<tr>", -1).length - 2, "a row per CSV row, and the heading");
+    }
+
+    @Test
+    void eachReplayCommandRunsAsPrintedFromTheFolderIntoItsOwnPicture(@TempDir Path out) throws Exception {
+        Path folder = ResultsFolders.tinyReference();
+        String html = Files.readString(folder.resolve(ResultsFolder.REPORT));
+        Matcher cmd = Pattern.compile("<code class=\"cmd\">(.*?)</code>").matcher(html);
+        List<String> replays = new ArrayList<>();
+        while (cmd.find()) {
+            String text = cmd.group(1).replaceAll("</?span>", "").replace("&quot;", "\"").replace("&amp;", "&");
+            if (text.startsWith("java -jar \"$SITCOV_JAR\" replay . --row ")) {
+                replays.add(text);
+            }
+        }
+        assertTrue(replays.size() >= 2, replays.toString());
+        assertEquals(replays.size(), replays.stream().map(r -> r.substring(r.lastIndexOf(' '))).distinct().count(),
+                "each row writes a picture of its own: " + replays);
+        String[] words = replays.get(0).split(" ");
+        List<String> args = new ArrayList<>(List.of(words).subList(3, words.length));
+        args.set(1, folder.toString());
+        args.set(args.size() - 1, out.resolve(words[words.length - 1]).toString());
+        CliRunner r = CliRunner.run(args.toArray(String[]::new));
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(Files.size(out.resolve(words[words.length - 1])) > 0);
+    }
+
+    private static String esc(String s) {
+        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
     }
 }

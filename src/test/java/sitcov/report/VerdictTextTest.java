@@ -11,6 +11,7 @@ import sitcov.experiment.BudgetKind;
 import sitcov.experiment.Comparison;
 import sitcov.experiment.ComparisonTest;
 import sitcov.experiment.Measure;
+import sitcov.experiment.SituationFaults;
 
 class VerdictTextTest {
     private static final Comparison COMPARISON = Comparison.of(ComparisonTest.config(6, List.of("coverage-filter", "random")),
@@ -58,5 +59,46 @@ class VerdictTextTest {
         assertTrue(rows.get(3).startsWith("measure,faults_found,coverage-filter,random,primary,higher-a,"), rows.get(3));
         assertTrue(rows.get(rows.size() - 1).startsWith("fault,fault_19,coverage-filter,random,untested,not-testable,"
                 + "found by neither driver,6,"), rows.get(rows.size() - 1));
+    }
+
+    @Test
+    void eachPairGetsAHeadingThenItsBottomLineInOneSentence() {
+        List<String> lines = VerdictText.lines(COMPARISON, List.of(), BudgetKind.TICKS);
+        int heading = lines.indexOf("## coverage-filter against random (6 paired replications)");
+        assertTrue(heading > 0, lines.toString());
+        // by hand: the primary (distinct faults) is higher for coverage-filter; cells covered and area are
+        // inconclusive, maps run, faults per map and the all-fault share not testable: 5 show nothing
+        assertEquals("In short: coverage-filter is ahead on distinct faults found (the primary question); the other 5"
+                + " measures show no difference.", lines.get(heading + 1));
+    }
+
+    @Test
+    void testsNoDifferenceCouldPassAtThisNAreSaidOnceNotOnEveryLine() {
+        List<String> lines = VerdictText.lines(COMPARISON, List.of(), BudgetKind.TICKS);
+        // 3 exploratory tests, Holm's first level 0.05/3 < 0.03125, the smallest p of 6 pairs
+        assertEquals(1, lines.stream().filter(l -> l.contains("no difference, however large, could have been shown"))
+                .count());
+        assertTrue(lines.stream().anyMatch(l -> l.contains("3 of the exploratory tests below were held (2 of measures, 1"
+                + " per fault)")), lines.toString());
+        assertTrue(lines.stream().noneMatch(l -> l.startsWith("- ") && l.contains("at this n")), lines.toString());
+    }
+
+    @Test
+    void theUniformityHeadlineLeavesOutFaultsTooRareToTestAndNamesItsDenominator() {
+        var faults = sitcov.faults.Fault.values();
+        List<SituationFaults.Uniformity> tests = List.of(
+                new SituationFaults.Uniformity(faults[0], 400, 200, 0.30, 0.10, 0.01),
+                new SituationFaults.Uniformity(faults[1], 400, 100, 0.10, 0.10, 0.50),
+                new SituationFaults.Uniformity(faults[2], 400, 1, 0.99, 0.20, 0.02),
+                new SituationFaults.Uniformity(faults[3], 400, 398, 0.90, 0.30, 0.03),
+                new SituationFaults.Uniformity(faults[4], 400, 0, 0, 0, 1));
+        String text = VerdictText.uniformity(tests);
+        // (0.30 + 0.10) / 2 = 20.0 %, (0.10 + 0.10) / 2 = 10.0 %: the single find's 0.99 is not averaged in
+        assertTrue(text.startsWith("Over the 400 distinct maps run (a map run by several drivers counted once), for the 2"
+                + " faults found on some maps but not all (faults 0, 1), the coverage cell explains on average 20.0 %"), text);
+        assertTrue(text.contains("against 10.0 % when"), text);
+        assertTrue(text.contains("for 1 of them more than chance"), text);
+        assertTrue(text.endsWith("Left out as too rare to test: fault 2 (found on fewer than 5 maps), fault 3 (missed on"
+                + " fewer than 5 maps)."), text);
     }
 }

@@ -1,0 +1,71 @@
+package sitcov.report;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.MapRun;
+
+/**
+ * For each fault, the first maps that found it, each with its row of runs.csv and a replay command
+ * that runs as printed from this folder, and the replay picture of the first.
+ */
+final class ReportFaultMaps {
+    /** Maps listed per fault; the rest are in runs.csv. */
+    static final int MAPS_PER_FAULT = 10;
+    /** The shell variable the printed commands take sitcov's jar from. */
+    static final String JAR = "SITCOV_JAR";
+
+    private ReportFaultMaps() {
+    }
+
+    /** The command replaying row {@code row} of runs.csv from the results folder, into a picture of its own. */
+    static String replay(int row) {
+        return "java -jar \"$" + JAR + "\" replay . --row " + row + " --png replay-row-" + row + ".png";
+    }
+
+    static void append(StringBuilder h, Path folder, ExperimentConfig config, List<MapRun> inOrder, String version) {
+        h.append("<h2>Maps that found each fault</h2><p class=\"muted\">Counts are of maps judged: every map each driver"
+                + " ran in each replication (runs.csv). Each command replays its row side by side, the run without the"
+                + " fault and the run with it, into a picture next to this page (add <code>--gif FILE</code> to watch"
+                + " them). Run it in a shell opened in this folder, once ").append(JAR).append(" names sitcov's jar: in"
+                + " the sitcov checkout, ").append(HtmlReport.command("mvn -q package -DskipTests && export " + JAR
+                + "=$PWD/target/sitcov-" + version + ".jar")).append("</p>");
+        var faults = config.faultList();
+        int perMap = 1 + faults.size();
+        for (int f = 0; f < faults.size(); f++) {
+            List<String> found = new ArrayList<>();
+            int total = 0;
+            for (int m = 0; m < inOrder.size(); m++) {
+                MapRun run = inOrder.get(m);
+                var outcome = run.faults().get(f);
+                if (outcome.found(false)) {
+                    total++;
+                    if (found.size() < MAPS_PER_FAULT) {
+                        int row = m * perMap + f + 2;
+                        found.add(String.format(Locale.ROOT, "<li>replication %d, %s, map %d (%s): %s, row %d of runs.csv"
+                                + "<br>%s</li>", run.replication(), HtmlReport.esc(run.driver()), run.mapIndex(),
+                                HtmlReport.esc(run.map().text()), outcome.newAccident().map(Enum::name).orElse("FOUND"), row,
+                                HtmlReport.command(replay(row))));
+                    }
+                }
+            }
+            h.append("<h3>fault ").append(faults.get(f).id()).append(" · ").append(HtmlReport.esc(faults.get(f).label()))
+                    .append("</h3><p>found on ").append(total).append(" of the ").append(inOrder.size())
+                    .append(" maps judged").append(total > found.size() ? " (the first " + found.size() + " listed)" : "")
+                    .append("</p>");
+            if (!found.isEmpty()) {
+                h.append("<ul class=\"maps\">").append(String.join("", found)).append("</ul>");
+            }
+            Path picture = ReplayGallery.picture(folder, faults.get(f));
+            if (Files.isRegularFile(picture)) {
+                String name = ReplayGallery.FOLDER + "/" + picture.getFileName();
+                h.append("<p>The first of them, replayed (left without the fault, right with it):<br><a href=\"").append(name)
+                        .append("\"><img src=\"").append(name).append("\" alt=\"replay of the first map that found fault ")
+                        .append(faults.get(f).id()).append("\"></a></p>");
+            }
+        }
+    }
+}

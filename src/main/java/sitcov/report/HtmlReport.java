@@ -21,7 +21,7 @@ final class HtmlReport {
             h1{font-size:1.6em;margin-bottom:.2em}h2{margin-top:1.6em;border-bottom:1px solid #ccc}h3{margin:1.2em 0 .3em}
             table{border-collapse:collapse;font-size:.85em;margin:.5em 0}caption{text-align:left;font-weight:600;padding:.2em 0}
             th,td{border:1px solid #ccc;padding:.2em .45em;text-align:left;vertical-align:top}
-            th{background:#f3f1ec;font-weight:600}table.stack td:nth-child(-n+2){min-width:8em}.n{text-align:right;white-space:nowrap;font-variant-numeric:tabular-nums}
+            th{background:#f3f1ec;font-weight:600}th.n{white-space:normal}table.stack td:nth-child(-n+2){min-width:8em}.n{text-align:right;white-space:nowrap;font-variant-numeric:tabular-nums}
             .key{display:block;font-weight:400;font-size:.8em;color:#777}
             img{max-width:100%;height:auto;border:1px solid #ddd;margin:.4em 0}
             code{background:#f3f1ec;padding:0 .25em;font-size:.85em}code.cmd span{white-space:nowrap}

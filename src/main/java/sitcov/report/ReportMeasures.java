@@ -71,13 +71,17 @@ final class ReportMeasures {
         double min = java.util.Arrays.stream(v).min().orElse(Double.NaN);
         double max = java.util.Arrays.stream(v).max().orElse(Double.NaN);
         String mean = percent(column) ? HtmlNumbers.percent(Descriptive.mean(v)) : VerdictText.number(Descriptive.mean(v));
-        return min == max ? mean : mean + " (" + format(column, Double.toString(min)) + "–"
-                + format(column, Double.toString(max)) + ")";
+        return min == max ? mean : mean + " (" + bound(column, min) + "–" + bound(column, max) + ")";
     }
 
     /** Shares in per cent, counts and means as numbers. */
     private static String format(String column, String value) {
         return percent(column) ? HtmlNumbers.percent(value) : HtmlNumbers.number(value);
+    }
+
+    /** A bound of a range: a share in per cent without the sign, which the mean before it carries. */
+    private static String bound(String column, double v) {
+        return percent(column) ? HtmlNumbers.percent(v).replace(" %", "") : HtmlNumbers.number(v);
     }
 
     private static boolean percent(String column) {

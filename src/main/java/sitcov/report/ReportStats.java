@@ -24,7 +24,7 @@ final class ReportStats {
     private static List<Column> faultColumns(String a, String b) {
         return List.of(Column.text("fault"), Column.text("finding"), Column.number(a), Column.number(b),
                 Column.number("difference, points (95 % CI)"), Column.number("p (Holm)"),
-                Column.number("pooled: found / maps of each"), Column.number("odds ratio (95 % CI)"));
+                Column.text("pooled: found / maps of each"), Column.number("odds ratio (95 % CI)"));
     }
 
     private ReportStats() {
@@ -85,7 +85,7 @@ final class ReportStats {
                 HtmlNumbers.percent(s.get(r, "mean_b")), difference(s, r, true), HtmlNumbers.p(s.get(r, "p_adjusted")),
                 s.get(r, "found_a") + "/" + s.get(r, "maps_a") + "; " + s.get(r, "found_b") + "/" + s.get(r, "maps_b"),
                 ratio.isEmpty() ? HtmlNumbers.NONE : HtmlNumbers.mean(ratio) + " (" + HtmlNumbers.mean(s.get(r, "or_low"))
-                        + " to " + HtmlNumbers.mean(s.get(r, "or_high")) + ")");
+                        + "–" + HtmlNumbers.mean(s.get(r, "or_high")) + ")");
     }
 
     /** "higher for random", "equivalent", "not testable: found by neither driver", and "(primary)". */

@@ -46,7 +46,11 @@ final class MergeCommand implements Command {
         }
         try {
             Summary summary = ShardMerger.merge(shards, target, RunCommand.execution(1));
-            SummaryTable.print(out, Manifest.read(target).config(), summary);
+            Manifest merged = Manifest.read(target);
+            if (!merged.checked()) {
+                err.println("sitcov: merge: " + Manifest.uncheckedWarning(target) + " (a shard was written before checks).");
+            }
+            SummaryTable.print(out, merged.config(), summary);
             VerdictPrinter.print(out, target);
         } catch (IllegalArgumentException e) {
             throw new UsageException("merge: " + e.getMessage() + ".");

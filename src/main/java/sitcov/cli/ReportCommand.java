@@ -42,10 +42,14 @@ final class ReportCommand implements Command {
                     + sitcov.report.ResultsFolder.MANIFEST + "); name the folder 'run' wrote.");
         }
         try {
+            Manifest manifest = Manifest.read(folder);
+            if (!manifest.checked()) {
+                err.println("sitcov: report: " + Manifest.uncheckedWarning(folder) + ".");
+            }
             Summary summary = ResultsFinisher.report(folder);
-            SummaryTable.print(out, Manifest.read(folder).config(), summary);
+            SummaryTable.print(out, manifest.config(), summary);
             VerdictPrinter.print(out, folder);
-        } catch (IllegalArgumentException e) {
+        } catch (IllegalArgumentException | IllegalStateException e) {
             throw new UsageException("report: " + e.getMessage() + ".");
         } catch (IOException e) {
             err.println("sitcov: report: could not write into " + folder + ": " + e.getMessage());

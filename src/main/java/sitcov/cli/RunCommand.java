@@ -16,6 +16,7 @@ import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentRunner;
 import sitcov.experiment.Shard;
 import sitcov.report.Manifest;
+import sitcov.report.ResultsFolder;
 import sitcov.report.ResultsRecorder;
 
 /**
@@ -93,6 +94,11 @@ final class RunCommand implements Command {
         }
         Manifest manifest;
         try {
+            if (!Files.exists(folder.resolve(ResultsFolder.MANIFEST)) && Files.exists(folder.resolve(ResultsFolder.LOCK))
+                    && ResultsFolder.holdsNothing(folder)) {
+                throw new UsageException("run: " + folder + " holds no results: the run that made it was stopped before it"
+                        + " wrote any; start it again with 'run PRESET --out " + folder + "'.");
+            }
             manifest = Manifest.read(folder);
             if (manifest.complete()) {
                 throw new UsageException("run: " + folder + " is complete already; there is nothing to resume.");
@@ -101,13 +107,16 @@ final class RunCommand implements Command {
                 throw new UsageException("run: " + folder + " was written by sitcov " + manifest.version() + ", this is "
                         + Version.current() + "; resume it with that version, or start the preset afresh.");
             }
+            if (!manifest.checked()) {
+                err.println("sitcov: run: " + Manifest.uncheckedWarning(folder) + ".");
+            }
             ResultsRecorder recorder = ResultsRecorder.resume(folder, manifest, execution(threads), System::nanoTime);
             return execute(recorder, folder, threads, " (resumed with " + recorder.journal().size() + " maps judged before)",
                     out, err);
         } catch (IOException e) {
-            throw new UsageException("run: cannot resume " + folder + ": " + e.getMessage());
+            throw new UsageException("run: cannot resume " + folder + ": " + e.getMessage() + ".");
         } catch (IllegalArgumentException | IllegalStateException e) {
-            throw new UsageException("run: cannot resume " + folder + ": " + e.getMessage());
+            throw new UsageException("run: cannot resume " + folder + ": " + e.getMessage() + ".");
         }
     }
 
@@ -164,9 +173,11 @@ final class RunCommand implements Command {
     private static Path folder(Options options, ExperimentConfig config, Shard shard) throws UsageException {
         if (options.value("--out").isPresent()) {
             Path out = Path.of(options.value("--out").get());
-            if (Files.isRegularFile(out) || (Files.isDirectory(out) && !isEmpty(out))) {
+            if (Files.isRegularFile(out) || (Files.isDirectory(out) && !holdsNothing(out))) {
+                boolean results = Files.isRegularFile(out.resolve(ResultsFolder.MANIFEST));
                 throw new UsageException("run: --out " + Options.shown(out) + " exists and is not an empty folder; results never"
-                        + " overwrite earlier ones: name a new folder (or resume it with run --resume " + out + ").");
+                        + " overwrite earlier ones: name a new folder" + (results ? " (or resume it with run --resume " + out
+                        + ")" : "") + ".");
             }
             return out;
         }
@@ -187,6 +198,15 @@ final class RunCommand implements Command {
         } catch (IOException e) {
             throw new UsageException("run: cannot create a results folder under " + base.getParent() + ": "
                     + e.getMessage() + "; run from a writable folder or name one with --out.");
+        }
+    }
+
+    /** Empty, or holding only what a run stopped before it wrote anything left (its lock, temporary files). */
+    private static boolean holdsNothing(Path dir) throws UsageException {
+        try {
+            return ResultsFolder.holdsNothing(dir);
+        } catch (IOException e) {
+            throw new UsageException("cannot read the folder " + dir + ": " + e.getMessage());
         }
     }
 

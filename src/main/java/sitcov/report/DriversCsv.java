@@ -17,8 +17,7 @@ final class DriversCsv {
                 + s.cellsCovered() + "," + s.stoppedBy().key() + "\n";
     }
 
-    static List<DriverSpend> read(String text, String source) {
-        List<String> lines = CsvLines.complete(text);
+    static List<DriverSpend> read(List<String> lines, String source) {
         if (lines.isEmpty() || !lines.get(0).equals(HEADER)) {
             throw new IllegalArgumentException(source + ": expected the header " + HEADER);
         }

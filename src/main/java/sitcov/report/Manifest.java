@@ -29,21 +29,53 @@ import sitcov.faults.FaultSet;
  * sitcov's version, the grid and its hash), which shard the folder holds, whether it is complete,
  * and whether a wall-clock budget was interrupted. Nothing timed, so complete folders of the same
  * experiment have the same manifest. A results folder can be resumed or merged from it alone.
+ *
+ * <p>{@code checks} holds a CRC-32 of every other line but {@code complete} (the one line the tool
+ * itself flips, and whose edits the journal exposes), so a hand edit is refused naming its key
+ * (README, "The results folder"). {@code checked} is false for a folder written before checks:
+ * it is read, and written again, without them.
  */
-public record Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed) {
+public record Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed,
+                       boolean checked) {
     private static final String HEADER = "# sitcov experiment manifest";
+    static final String CHECKS = "checks";
+    private static final String COMPLETE = "complete";
+
+    /** A manifest with checks, as every folder is written now. */
+    public Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed) {
+        this(config, version, shard, complete, resumed, true);
+    }
 
     public Manifest complete(boolean done) {
-        return new Manifest(config, version, shard, done, resumed);
+        return new Manifest(config, version, shard, done, resumed, checked);
     }
 
     /** The same experiment, marked resumed when that changes its results (a wall-clock budget). */
     public Manifest resumedRun() {
-        return new Manifest(config, version, shard, complete, resumed || config.budget() == BudgetKind.WALL_CLOCK);
+        return new Manifest(config, version, shard, complete, resumed || config.budget() == BudgetKind.WALL_CLOCK, checked);
     }
 
     public Manifest whole() {
-        return new Manifest(config, version, Shard.WHOLE, complete, resumed);
+        return new Manifest(config, version, Shard.WHOLE, complete, resumed, checked);
+    }
+
+    /** What to say of a folder written before checks, which is read as it is. */
+    public static String uncheckedWarning(Path folder) {
+        return "warning: " + folder + " was written before sitcov checked its results folders, so a hand edit to it"
+                + " cannot be detected; run the experiment again into a new folder for one that is checked";
+    }
+
+    /** SHA-256 of the identity's lines: what keys the journal's checks to this experiment. */
+    String experimentDigest() {
+        StringBuilder text = new StringBuilder();
+        identity().forEach((k, v) -> text.append(k).append('=').append(v).append('\n'));
+        return sha256(text.toString());
+    }
+
+    /** The command that runs this experiment again into a new folder. */
+    String rerun() {
+        return "run " + config.name() + " --seed " + config.masterSeed() + " --replications " + config.replications()
+                + (shard.isWhole() ? "" : " --shard " + shard) + " --out NEW_FOLDER";
     }
 
     /** The keys that say which experiment this is: folders to merge must agree on all of them. */
@@ -71,13 +103,18 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
 
     List<String> lines() {
         Map<String, String> m = new TreeMap<>(identity());
-        m.put("complete", Boolean.toString(complete));
         if (!shard.isWhole()) {
             m.put("shard", shard.toString());
         }
         if (resumed) {
             m.put("resumed", "true");
         }
+        if (checked) {
+            List<String> crcs = new ArrayList<>();
+            m.forEach((k, v) -> crcs.add(JournalCheck.crc(k + "=" + v)));
+            m.put(CHECKS, String.join(" ", crcs));
+        }
+        m.put(COMPLETE, Boolean.toString(complete));
         List<String> rows = new ArrayList<>();
         rows.add(HEADER);
         m.forEach((k, v) -> rows.add(k + "=" + v));
@@ -98,10 +135,17 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
     public static Manifest read(Path folder) throws IOException {
         Path file = folder.resolve(ResultsFolder.MANIFEST);
         Properties p = new Properties();
-        try (Reader r = new StringReader(Files.readString(file, StandardCharsets.UTF_8))) {
-            p.load(r);
+        String text;
+        try {
+            text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (NoSuchFileException e) {
             throw new IllegalArgumentException(folder + " is not a results folder: it has no " + ResultsFolder.MANIFEST);
+        }
+        try (Reader r = new StringReader(text)) {
+            p.load(r);
+        }
+        if (p.containsKey(CHECKS)) {
+            verify(text, file);
         }
         try {
             GridDefinition grid = GridDefinition.read(folder.resolve(ResultsFolder.GRID));
@@ -122,12 +166,72 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
                     AnalysisPlan.read(p::getProperty, drivers));
             Shard shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
             return new Manifest(config, required(p, "sitcov_version"), shard,
-                    Boolean.parseBoolean(required(p, "complete")), Boolean.parseBoolean(p.getProperty("resumed", "false")));
+                    Boolean.parseBoolean(required(p, COMPLETE)), Boolean.parseBoolean(p.getProperty("resumed", "false")),
+                    p.containsKey(CHECKS));
         } catch (NoSuchFileException e) {
             throw new IllegalArgumentException(folder + " lacks " + e.getFile() + "; it is not a whole results folder");
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException(file + ": " + e.getMessage(), e);
         }
+    }
+
+    /**
+     * Refuses a manifest whose lines are not those its checks were made of, naming the keys that
+     * were changed, added or removed.
+     */
+    private static void verify(String text, Path file) {
+        List<String> lines = new ArrayList<>();
+        String checks = "";
+        for (String line : text.split("\n", -1)) {
+            String key = key(line);
+            if (key.equals(CHECKS)) {
+                checks = line.substring(line.indexOf('=') + 1).strip();
+            } else if (!key.isEmpty() && !key.equals(COMPLETE)) {
+                lines.add(line);
+            }
+        }
+        List<String> stored = checks.isEmpty() ? List.of() : List.of(checks.split(" +"));
+        List<String> changed = new ArrayList<>();
+        if (stored.size() == lines.size()) {
+            for (int i = 0; i < lines.size(); i++) {
+                if (!JournalCheck.crc(lines.get(i)).equals(stored.get(i))) {
+                    changed.add(key(lines.get(i)));
+                }
+            }
+        } else {
+            lines.stream().filter(l -> !stored.contains(JournalCheck.crc(l))).forEach(l -> changed.add(key(l)));
+        }
+        if (changed.isEmpty() && stored.size() == lines.size()) {
+            return;
+        }
+        String what = changed.isEmpty() ? removed(lines, stored) : String.join(", ", changed) + (changed.size() == 1
+                ? " was" : " were") + (stored.size() == lines.size() ? " changed" : " added or changed");
+        throw new IllegalArgumentException(file + ": " + what + " after sitcov wrote it (the manifest's '" + CHECKS
+                + "' line no longer matches); put the manifest back as it was, or run the experiment again into a"
+                + " new folder");
+    }
+
+    /** Where lines are missing: before the first line that is out of step with the checks. */
+    private static String removed(List<String> lines, List<String> stored) {
+        if (lines.size() > stored.size()) {
+            return "a line was repeated";
+        }
+        for (int i = 0; i < lines.size(); i++) {
+            if (!JournalCheck.crc(lines.get(i)).equals(stored.get(i))) {
+                return "a line before '" + key(lines.get(i)) + "' was removed";
+            }
+        }
+        return lines.isEmpty() ? "its lines were removed" : "a line after '" + key(lines.get(lines.size() - 1)) + "' was removed";
+    }
+
+    /** The key of a properties line; empty for a comment or a blank line. */
+    private static String key(String line) {
+        String s = line.strip();
+        if (s.isEmpty() || s.startsWith("#") || s.startsWith("!")) {
+            return "";
+        }
+        int eq = s.indexOf('=');
+        return (eq < 0 ? s : s.substring(0, eq)).strip();
     }
 
     private static String required(Properties p, String key) {

@@ -59,19 +59,26 @@ public final class ResultsFinisher {
     /**
      * Writes a complete folder's tables, statistics and figures again from its journal, as this
      * version of sitcov makes them; the journal, manifest and record of execution stay as they are.
+     * Holds the folder's lock meanwhile, and sweeps the temporary files a killed report left.
+     *
+     * @throws IllegalStateException when a run holds the folder
+     * @throws IllegalArgumentException when the folder is incomplete or was changed by hand
      */
     public static Summary report(Path folder) throws IOException {
         Manifest manifest = Manifest.read(folder);
         if (!manifest.complete()) {
             throw new IllegalArgumentException(folder + " is not complete; finish it with 'run --resume " + folder + "'");
         }
-        return writeResults(folder, manifest, JournalFiles.read(folder, manifest.config()));
+        try (FolderLock lock = FolderLock.claim(folder)) {
+            ResultsFolder.sweepTemporaries(folder);
+            return writeResults(folder, manifest, JournalFiles.read(folder, manifest));
+        }
     }
 
     private static Summary writeResults(Path folder, Manifest manifest, Journal journal) throws IOException {
         ExperimentConfig config = manifest.config();
         List<ReplicationResult> results = results(manifest, journal);
-        JournalFiles.write(folder, config, journal);
+        JournalFiles.write(folder, manifest, journal);
         Summary summary = new Summary(config, results);
         if (config.isSweep()) {
             SweepReport.write(config, summary, folder);

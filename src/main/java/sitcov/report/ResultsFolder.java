@@ -1,7 +1,11 @@
 package sitcov.report;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
 
 /**
  * The files of an experiment's results folder: the one place their names are written down. The
@@ -54,7 +58,56 @@ public final class ResultsFolder {
     /** Files whose content depends on how fast the machine was. */
     public static final List<String> TIMED = List.of(TIMINGS, EXECUTION, FIG3_TIME);
 
+    /** Every file name sitcov writes at the top of a results folder. */
+    private static final List<String> NAMES = List.of(RUNS, DRIVERS, TIMINGS, MANIFEST, EXECUTION, GRID, SUMMARY, TABLE2,
+            COVERAGE_CURVE, FIG2, FIG3, FIG3_TIME, STATS, VERDICT, DISCOVERY, CELL_FAULTS, UNIFORMITY, REPORT, FIG_FORESTPLOT,
+            FIG_MEASURES, FIG_DISCOVERY, SWEEP, FIG4);
+
+    /**
+     * The temporary files {@link OutputFile} names ({@code .NAME<digits>.tmp}) for the files sitcov
+     * writes: at the top, in situations/ and in replays/. A kill leaves them; nothing else matches.
+     */
+    private static final Pattern TOP_TEMP = Pattern.compile("\\.(" + String.join("|", NAMES.stream().map(Pattern::quote)
+            .toList()) + ")\\d+\\.tmp");
+    private static final Pattern SITUATION_TEMP = Pattern.compile("\\.[A-Za-z0-9][A-Za-z0-9._-]*\\.situation\\d+\\.tmp");
+    private static final Pattern REPLAY_TEMP = Pattern.compile("\\.fault-\\d+\\.png\\d+\\.tmp");
+
     private ResultsFolder() {
+    }
+
+    /**
+     * Deletes the temporary files a killed run left in {@code folder} (only those sitcov names, never
+     * another file). Call it only while holding the folder's {@link FolderLock}: a live run's
+     * temporary files are not stale.
+     */
+    static void sweepTemporaries(Path folder) throws IOException {
+        sweep(folder, TOP_TEMP);
+        sweep(folder.resolve(SITUATIONS), SITUATION_TEMP);
+        sweep(folder.resolve(ReplayGallery.FOLDER), REPLAY_TEMP);
+    }
+
+    private static void sweep(Path dir, Pattern temp) throws IOException {
+        if (!Files.isDirectory(dir)) {
+            return;
+        }
+        try (Stream<Path> files = Files.list(dir)) {
+            for (Path f : files.filter(f -> temp.matcher(f.getFileName().toString()).matches()).toList()) {
+                if (Files.isRegularFile(f, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+                    Files.deleteIfExists(f);
+                }
+            }
+        }
+    }
+
+    /**
+     * Whether {@code folder} holds nothing but what a run killed before it wrote anything leaves: its
+     * lock file and sitcov's temporary files. Such a folder is taken as empty by {@code run --out}.
+     */
+    public static boolean holdsNothing(Path folder) throws IOException {
+        try (Stream<Path> files = Files.list(folder)) {
+            return files.map(f -> f.getFileName().toString())
+                    .allMatch(n -> n.equals(LOCK) || TOP_TEMP.matcher(n).matches());
+        }
     }
 
     public static Path situation(Path folder, String name) {

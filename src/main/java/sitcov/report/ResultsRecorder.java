@@ -39,7 +39,7 @@ public final class ResultsRecorder implements ExperimentListener {
         this.execution = new LinkedHashMap<>(execution);
         this.nanoClock = nanoClock;
         this.start = nanoClock.getAsLong();
-        this.writer = new JournalWriter(folder, manifest.config());
+        this.writer = new JournalWriter(folder, manifest);
     }
 
     /**
@@ -53,35 +53,39 @@ public final class ResultsRecorder implements ExperimentListener {
                                          LongSupplier nanoClock) throws IOException {
         Files.createDirectories(folder);
         FolderLock lock = FolderLock.claim(folder);
-        try (var files = Files.list(folder)) {
-            if (files.anyMatch(f -> !f.getFileName().toString().equals(ResultsFolder.LOCK))) {
-                lock.close();
-                throw new IllegalArgumentException(folder + " holds files already; results never overwrite earlier ones");
-            }
+        if (!ResultsFolder.holdsNothing(folder)) {
+            lock.close();
+            throw new IllegalArgumentException(folder + " holds files already; results never overwrite earlier ones");
         }
-        OutputFile.writeString(folder.resolve(ResultsFolder.RUNS), new RunsCsv(manifest.config()).header() + "\n");
-        OutputFile.writeString(folder.resolve(ResultsFolder.DRIVERS), DriversCsv.HEADER + "\n");
-        OutputFile.writeString(folder.resolve(ResultsFolder.TIMINGS), TimingsCsv.HEADER + "\n");
+        // what a run killed before it wrote anything left
+        ResultsFolder.sweepTemporaries(folder);
+        JournalCheck check = JournalCheck.of(manifest);
+        OutputFile.writeString(folder.resolve(ResultsFolder.RUNS), check.header(new RunsCsv(manifest.config()).header(), true)
+                + "\n");
+        OutputFile.writeString(folder.resolve(ResultsFolder.DRIVERS), check.header(DriversCsv.HEADER, false) + "\n");
+        OutputFile.writeString(folder.resolve(ResultsFolder.TIMINGS), check.header(TimingsCsv.HEADER, false) + "\n");
         // the manifest last: a folder that has one has its journal files too
         manifest.complete(false).write(folder);
         return new ResultsRecorder(folder, lock, manifest, Journal.empty(), execution, nanoClock);
     }
 
     /**
-     * Takes up a folder a killed run left: keeps what its journal holds whole (rewritten without
-     * what the kill cut short) and continues it. The manifest says so when that changes the results.
+     * Takes up a folder a killed run left: sweeps the temporary files the kill left, keeps what its
+     * journal holds whole (rewritten without what the kill cut short) and continues it. A journal or
+     * situation file changed by hand is refused. The manifest says so when that changes the results.
      */
     public static ResultsRecorder resume(Path folder, Manifest manifest, Map<String, String> execution,
                                          LongSupplier nanoClock) throws IOException {
         FolderLock lock = FolderLock.claim(folder);
         Journal journal;
         try {
-            journal = JournalFiles.read(folder, manifest.config());
+            ResultsFolder.sweepTemporaries(folder);
+            journal = JournalFiles.read(folder, manifest);
         } catch (IOException | RuntimeException e) {
             lock.close();
             throw e;
         }
-        JournalFiles.write(folder, manifest.config(), journal);
+        JournalFiles.write(folder, manifest, journal);
         Manifest resumed = manifest.resumedRun();
         resumed.write(folder);
         Map<String, String> facts = new LinkedHashMap<>(execution);
@@ -114,7 +118,7 @@ public final class ResultsRecorder implements ExperimentListener {
                 writer.close();
                 writer = null;
                 execution.put("wall_seconds", String.format(Locale.ROOT, "%.1f", (nanoClock.getAsLong() - start) / 1e9));
-                summary = ResultsFinisher.finish(folder, manifest, JournalFiles.read(folder, manifest.config()), execution);
+                summary = ResultsFinisher.finish(folder, manifest, JournalFiles.read(folder, manifest), execution);
                 lock.close();
             } catch (IOException e) {
                 throw new UncheckedIOException("could not complete the results in " + folder + ": " + e.getMessage(), e);

@@ -32,8 +32,9 @@ public final class ResultsRows {
     }
 
     public static Row row(Path folder, int number) throws IOException {
-        ExperimentConfig config = Manifest.read(folder).config();
-        List<Journal.Entry> maps = JournalFiles.inOrder(config, JournalFiles.read(folder, config));
+        Manifest manifest = Manifest.read(folder);
+        ExperimentConfig config = manifest.config();
+        List<Journal.Entry> maps = JournalFiles.inOrder(config, JournalFiles.read(folder, manifest));
         int perMap = 1 + config.faultList().size();
         if (number < 1 || number > maps.size() * perMap) {
             throw new IllegalArgumentException("runs.csv of " + folder + " has rows 1.." + maps.size() * perMap
@@ -46,8 +47,9 @@ public final class ResultsRows {
 
     public static Row find(Path folder, int replication, String driver, int mapIndex, Optional<Fault> fault)
             throws IOException {
-        ExperimentConfig config = Manifest.read(folder).config();
-        List<Journal.Entry> maps = JournalFiles.inOrder(config, JournalFiles.read(folder, config));
+        Manifest manifest = Manifest.read(folder);
+        ExperimentConfig config = manifest.config();
+        List<Journal.Entry> maps = JournalFiles.inOrder(config, JournalFiles.read(folder, manifest));
         if (fault.isPresent() && !config.faultList().contains(fault.get())) {
             throw new IllegalArgumentException("the experiment in " + folder + " did not seed fault " + fault.get().id()
                     + "; its faults are " + config.faultList().stream().map(f -> Integer.toString(f.id())).toList());

@@ -75,7 +75,11 @@ final class RunsCsv {
      * was written) ends the reading; anything else malformed is refused, naming the line.
      */
     List<MapRun> read(String text, String source) {
-        List<String> lines = CsvLines.complete(text);
+        return read(CsvLines.complete(text), source);
+    }
+
+    /** The complete map blocks of runs.csv's whole lines (see {@link CsvLines}). */
+    List<MapRun> read(List<String> lines, String source) {
         if (lines.isEmpty() || !lines.get(0).equals(header)) {
             throw new IllegalArgumentException(source + ": expected the header of this experiment's runs.csv:\n  " + header
                     + "\nfound:\n  " + (lines.isEmpty() ? "(nothing)" : lines.get(0)));

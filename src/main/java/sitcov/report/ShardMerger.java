@@ -71,7 +71,7 @@ public final class ShardMerger {
         }
         Journal journal = Journal.empty();
         for (int k = 1; k <= n; k++) {
-            Journal part = JournalFiles.read(byK[k], first.config());
+            Journal part = JournalFiles.read(byK[k], manifests.get(shards.indexOf(byK[k])));
             for (Journal.Entry e : part.entries().stream()
                     .sorted(java.util.Comparator.comparingInt((Journal.Entry x) -> x.run().mapIndex())).toList()) {
                 checkShare(byK[k], k, n, e.run().replication());
@@ -83,7 +83,9 @@ public final class ShardMerger {
                 journal.add(f);
             }
         }
-        Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed);
+        // a shard written before checks leaves the merged folder without them: its rows were never checked
+        boolean checked = manifests.stream().allMatch(Manifest::checked);
+        Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed, checked);
         Files.createDirectories(out);
         try (FolderLock lock = FolderLock.claim(out)) {
             merged.write(out);
@@ -126,7 +128,9 @@ public final class ShardMerger {
         Path to = out.resolve(ResultsFolder.SITUATIONS);
         Files.createDirectories(to);
         try (Stream<Path> files = Files.list(from)) {
-            for (Path f : files.toList()) {
+            // situation files only: not the temporary files a killed shard left
+            for (Path f : files.filter(f -> f.getFileName().toString().endsWith(".situation")
+                    && !f.getFileName().toString().startsWith(".")).toList()) {
                 Files.copy(f, to.resolve(f.getFileName()), StandardCopyOption.REPLACE_EXISTING);
             }
         }

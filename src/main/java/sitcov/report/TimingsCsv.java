@@ -38,8 +38,7 @@ final class TimingsCsv {
         return replication + "/" + driver + "/" + what;
     }
 
-    static Times read(String text, String source) {
-        List<String> lines = CsvLines.complete(text);
+    static Times read(List<String> lines, String source) {
         if (lines.isEmpty() || !lines.get(0).equals(HEADER)) {
             throw new IllegalArgumentException(source + ": expected the header " + HEADER);
         }

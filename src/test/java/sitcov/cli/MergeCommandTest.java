@@ -82,4 +82,28 @@ class MergeCommandTest {
         assertEquals(2, incomplete.exitCode());
         assertTrue(incomplete.err().contains("is not complete; finish it with run --resume"), incomplete.err());
     }
+
+    @Test
+    void aShardEditedByHandIsRefusedNamingTheFile(@TempDir Path out) throws Exception {
+        Path copy = out.resolve("s2");
+        ResultsFolders.copy(shards.resolve("s2"), copy);
+        Path drivers = copy.resolve(ResultsFolder.DRIVERS);
+        Files.writeString(drivers, Files.readString(drivers).replace("\n1,random,", "\n1,random,1"));
+        CliRunner r = CliRunner.run("merge", shard(1), copy.toString(), shard(3), "--out", out.resolve("m").toString());
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().contains(drivers + ":3: this row was changed after sitcov wrote it"), r.err());
+        assertTrue(!Files.exists(out.resolve("m")), "a refused merge writes nothing");
+    }
+
+    @Test
+    void theTemporaryFilesAKilledShardLeftAreNotCopied(@TempDir Path out) throws Exception {
+        Path copy = out.resolve("s2");
+        ResultsFolders.copy(shards.resolve("s2"), copy);
+        Files.createDirectories(copy.resolve(ResultsFolder.SITUATIONS));
+        Files.writeString(copy.resolve(ResultsFolder.SITUATIONS).resolve(".search-r1-0.situation5521.tmp"), "sitcov-sit");
+        Path merged = out.resolve("merged");
+        CliRunner r = CliRunner.run("merge", shard(1), copy.toString(), shard(3), "--out", merged.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        ResultsFolders.assertSameResults(ResultsFolders.tinyReference(), merged);
+    }
 }

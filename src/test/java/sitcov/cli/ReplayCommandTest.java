@@ -9,12 +9,14 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.UnaryOperator;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import sitcov.report.ResultsFolder;
+import sitcov.report.SignedEdits;
 
 class ReplayCommandTest {
     /** The number (1 = first under the header) of the first row of the tiny reference run whose fault was FOUND. */
@@ -63,16 +65,29 @@ class ReplayCommandTest {
         Path copy = dir.resolve("tampered");
         ResultsFolders.copy(ResultsFolders.tinyReference(), copy);
         int row = firstFoundRow();
-        List<String> rows = new ArrayList<>(Files.readAllLines(copy.resolve(ResultsFolder.RUNS)));
+        List<String> rows = Files.readAllLines(copy.resolve(ResultsFolder.RUNS));
         // the fault-free row of the same map: its ticks column (14th) recorded one tick more than it ran
         int faultFreeRow = row - 1;
         while (!rows.get(faultFreeRow).contains(",NONE,")) {
             faultFreeRow--;
         }
-        String[] cells = rows.get(faultFreeRow).split(",", -1);
-        cells[13] = Long.toString(Long.parseLong(cells[13]) + 1);
-        rows.set(faultFreeRow, String.join(",", cells));
+        UnaryOperator<String> oneTickMore = line -> {
+            String[] cells = line.split(",", -1);
+            cells[13] = Long.toString(Long.parseLong(cells[13]) + 1);
+            return String.join(",", cells);
+        };
+        // edited by hand, the row no longer matches its check: refused before anything is judged
+        List<String> edited = new ArrayList<>(rows);
+        edited.set(faultFreeRow, oneTickMore.apply(rows.get(faultFreeRow)));
+        Files.write(copy.resolve(ResultsFolder.RUNS), edited);
+        CliRunner hand = CliRunner.run("replay", copy.toString(), "--row", Integer.toString(row), "--png",
+                dir.resolve("x.png").toString());
+        assertEquals(ExitCode.USAGE, hand.exitCode(), hand.out());
+        assertTrue(hand.err().contains("runs.csv:" + (faultFreeRow + 1) + ": this row was changed"), hand.err());
+
+        // as another build of sitcov would have written it, checks and all: replay's own check finds it
         Files.write(copy.resolve(ResultsFolder.RUNS), rows);
+        SignedEdits.editRunsRow(copy, faultFreeRow + 1, oneTickMore);
         CliRunner r = CliRunner.run("replay", copy.toString(), "--row", Integer.toString(row), "--png",
                 dir.resolve("x.png").toString());
         assertEquals(ExitCode.FAILURE, r.exitCode(), r.out());

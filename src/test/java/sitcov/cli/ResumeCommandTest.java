@@ -1,5 +1,6 @@
 package sitcov.cli;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -68,7 +69,7 @@ class ResumeCommandTest {
     }
 
     @Test
-    void aRowCutShortByTheKillIsJudgedAgain() throws Exception {
+    void whatTheKillCutShortIsJudgedAgainAndTheTemporaryFilesItLeftAreSwept() throws Exception {
         Path folder = dir.resolve("cut");
         interrupt(ResultsFolders.TINY, folder, 5);
         Path runs = folder.resolve(ResultsFolder.RUNS);
@@ -78,6 +79,9 @@ class ResumeCommandTest {
                 + lines.get(lines.size() - 1).substring(0, 20);
         Files.writeString(runs, cut, StandardCharsets.UTF_8);
         Files.writeString(folder.resolve(ResultsFolder.DRIVERS), "0,coverage-fil", StandardOpenOption.APPEND);
+        // a kill while a file was being written whole leaves its temporary copy beside it
+        Files.writeString(folder.resolve(".runs.csv8351.tmp"), "0,coverage-filter,0,");
+        Files.writeString(folder.resolve(".manifest.properties12.tmp"), "# sitcov");
 
         CliRunner r = CliRunner.run("run", "--resume", folder.toString());
         assertEquals(0, r.exitCode(), r.err());
@@ -97,7 +101,7 @@ class ResumeCommandTest {
         String manifest = Files.readString(folder.resolve(ResultsFolder.MANIFEST));
         assertTrue(manifest.contains("\nresumed=true\n") && manifest.contains("\ncomplete=true\n"), manifest);
         assertTrue(Files.readString(folder.resolve(ResultsFolder.DRIVERS)).contains(",random,")
-                && Files.readString(folder.resolve(ResultsFolder.DRIVERS)).contains(",wall-clock\n"));
+                && Files.readString(folder.resolve(ResultsFolder.DRIVERS)).contains(",wall-clock,"));
     }
 
     @Test
@@ -111,5 +115,45 @@ class ResumeCommandTest {
         CliRunner both = CliRunner.run("run", ResultsFolders.TINY, "--resume", dir.toString());
         assertEquals(2, both.exitCode());
         assertTrue(both.err().contains("--resume DIR takes everything from DIR's manifest"), both.err());
+    }
+
+    @Test
+    void anUnfinishedFolderWhoseManifestWasEditedIsNotResumedIntoAMixOfBoth() throws Exception {
+        Path stopped = dir.resolve("stopped");
+        interrupt(ResultsFolders.TINY, stopped, 9);
+        List<String[]> edits = List.of(new String[] {"candidates=12", "candidates=13", "candidates"},
+                new String[] {"drivers=coverage-filter,random\n", "drivers=random,coverage-filter\n", "drivers"},
+                new String[] {"budget=ticks", "budget=wall-clock", "budget"},
+                new String[] {"faulty_runs=until-verdict", "faulty_runs=to-end", "faulty_runs"});
+        for (String[] e : edits) {
+            Path folder = dir.resolve("edited-" + e[2]);
+            ResultsFolders.copy(stopped, folder);
+            Path manifest = folder.resolve(ResultsFolder.MANIFEST);
+            String text = Files.readString(manifest);
+            assertTrue(text.contains("\n" + e[0]), e[0]);
+            Files.writeString(manifest, text.replace("\n" + e[0], "\n" + e[1]));
+            byte[] runs = Files.readAllBytes(folder.resolve(ResultsFolder.RUNS));
+
+            CliRunner r = CliRunner.run("run", "--resume", folder.toString());
+            assertEquals(ExitCode.USAGE, r.exitCode(), r.out());
+            assertTrue(r.err().contains(manifest + ": " + e[2] + " was changed after sitcov wrote it"), r.err());
+            assertArrayEquals(runs, Files.readAllBytes(folder.resolve(ResultsFolder.RUNS)), "the journal is left as it was");
+        }
+    }
+
+    @Test
+    void aFolderHoldingOnlyTheLockOfAKilledStartHasOneWayOut() throws Exception {
+        Path folder = dir.resolve("lock-only");
+        Files.createDirectories(folder);
+        Files.writeString(folder.resolve(ResultsFolder.LOCK), "");
+        Files.writeString(folder.resolve(".runs.csv99.tmp"), "replication,dri");
+        CliRunner resume = CliRunner.run("run", "--resume", folder.toString());
+        assertEquals(ExitCode.USAGE, resume.exitCode());
+        assertTrue(resume.err().contains("holds no results: the run that made it was stopped before it wrote any; start it"
+                + " again with 'run PRESET --out " + folder + "'"), resume.err());
+        CliRunner again = CliRunner.run("run", ResultsFolders.TINY, "--replications", "1", "--out", folder.toString());
+        assertEquals(0, again.exitCode(), again.err());
+        assertTrue(Files.readString(folder.resolve(ResultsFolder.MANIFEST)).contains("\ncomplete=true\n"));
+        assertFalse(Files.exists(folder.resolve(".runs.csv99.tmp")), "the killed start's temporary file is swept");
     }
 }

@@ -1,6 +1,8 @@
 package sitcov.report;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -50,7 +52,7 @@ class ResultsRecorderTest {
         new ExperimentRunner(config, WITH_BUILDER, Shard.WHOLE, recorder.journal(), 1, System::nanoTime, List.of(recorder))
                 .run();
 
-        Journal journal = JournalFiles.read(dir, config);
+        Journal journal = JournalFiles.read(dir, manifest);
         List<MapRun> maps = journal.maps(0, "builder").stream().map(Journal.Entry::run).toList();
         assertTrue(maps.size() >= 2, "the builder ran " + maps.size() + " situations");
         for (MapRun m : maps) {
@@ -77,5 +79,39 @@ class ResultsRecorderTest {
                 assertEquals("rw-r--r--", PosixFilePermissions.toString(Files.getPosixFilePermissions(f)), f.toString());
             }
         }
+    }
+
+    @Test
+    void aKeptSituationFileDeletedOrChangedIsRefusedNamingIt() throws Exception {
+        ExperimentConfig config = new ExperimentConfig("kept", 5, 6, 1, FaultSet.parse("19"), BudgetKind.TICKS,
+                GridDefinition.paper(), List.of("builder"), List.of(), 6, FaultyRuns.UNTIL_VERDICT);
+        ResultsRecorder recorder = ResultsRecorder.create(dir, new Manifest(config, "test", Shard.WHOLE, false, false),
+                Map.of(), System::nanoTime);
+        new ExperimentRunner(config, WITH_BUILDER, Shard.WHOLE, recorder.journal(), 1, System::nanoTime, List.of(recorder))
+                .run();
+        Path kept = ResultsFolder.situation(dir, "built-1");
+        String text = Files.readString(kept);
+        ResultsFinisher.report(dir);
+
+        // a road moved by hand: "road 0 NORTH_SOUTH 55.06 ..." becomes "road 0 NORTH_SOUTH 550.06 ..."
+        String edited = text.replaceFirst("(?m)^(road \\S+ \\S+ \\d+)", "$10");
+        assertNotEquals(text, edited);
+        Files.writeString(kept, edited);
+        IllegalArgumentException changed = assertThrows(IllegalArgumentException.class, () -> ResultsFinisher.report(dir));
+        assertTrue(changed.getMessage().startsWith(kept + " was changed after sitcov wrote it (it does not match the check in "
+                + dir.resolve(ResultsFolder.RUNS) + ":"), changed.getMessage());
+
+        Files.delete(kept);
+        IllegalArgumentException missing = assertThrows(IllegalArgumentException.class, () -> ResultsFinisher.report(dir));
+        assertTrue(missing.getMessage().startsWith(kept + " is missing, but " + dir.resolve(ResultsFolder.RUNS) + ":"),
+                missing.getMessage());
+        // a resume reads the journal the same way, and gives the folder up again when it refuses it
+        Manifest unfinished = Manifest.read(dir).complete(false);
+        IllegalArgumentException resumed = assertThrows(IllegalArgumentException.class,
+                () -> ResultsRecorder.resume(dir, unfinished, Map.of(), System::nanoTime));
+        assertTrue(resumed.getMessage().startsWith(kept + " is missing"), resumed.getMessage());
+
+        Files.writeString(kept, text);
+        ResultsFinisher.report(dir);
     }
 }

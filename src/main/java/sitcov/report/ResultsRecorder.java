@@ -59,12 +59,17 @@ public final class ResultsRecorder implements ExperimentListener {
                 throw new IllegalArgumentException(folder + " holds files already; results never overwrite earlier ones");
             }
         }
-        OutputFile.writeString(folder.resolve(ResultsFolder.RUNS), new RunsCsv(manifest.config()).header() + "\n");
-        OutputFile.writeString(folder.resolve(ResultsFolder.DRIVERS), DriversCsv.HEADER + "\n");
-        OutputFile.writeString(folder.resolve(ResultsFolder.TIMINGS), TimingsCsv.HEADER + "\n");
-        // the manifest last: a folder that has one has its journal files too
-        manifest.complete(false).write(folder);
-        return new ResultsRecorder(folder, lock, manifest, Journal.empty(), execution, nanoClock);
+        try {
+            OutputFile.writeString(folder.resolve(ResultsFolder.RUNS), new RunsCsv(manifest.config()).header() + "\n");
+            OutputFile.writeString(folder.resolve(ResultsFolder.DRIVERS), DriversCsv.HEADER + "\n");
+            OutputFile.writeString(folder.resolve(ResultsFolder.TIMINGS), TimingsCsv.HEADER + "\n");
+            // the manifest last: a folder that has one has its journal files too
+            manifest.complete(false).write(folder);
+            return new ResultsRecorder(folder, lock, manifest, Journal.empty(), execution, nanoClock);
+        } catch (IOException | RuntimeException e) {
+            lock.close(); // a full disk must not leave the folder claimed
+            throw e;
+        }
     }
 
     /**
@@ -106,8 +111,10 @@ public final class ResultsRecorder implements ExperimentListener {
         return summary;
     }
 
+    /** @throws FolderLock.Lost at the first event after the folder was deleted, before anything is written */
     @Override
     public void on(ExperimentEvent event) {
+        lock.verify();
         writer.on(event);
         if (event instanceof ExperimentEvent.Ended) {
             try {

@@ -10,12 +10,14 @@ import java.util.Set;
 import sitcov.coverage.CoverageGrid;
 import sitcov.coverage.GridDefinition;
 import sitcov.report.CoverageHeatMap;
+import sitcov.report.IoReason;
 import sitcov.world.MapGenerator;
 
 /** {@code coverage --maps N}: how many cells of the situation grid N random maps reach, without simulating them. */
 final class CoverageCommand implements Command {
     /** Counting is streamed; past this a run takes minutes for nothing the grid does not show already. */
     static final int MAX_MAPS = 10_000_000;
+    private static final int PROGRESS_EVERY = 1000;
 
     @Override
     public String name() {
@@ -42,9 +44,15 @@ final class CoverageCommand implements Command {
         GridDefinition definition = grid(options.inputFile("--grid"));
         Optional<Path> png = options.outputFile("--png");
         CoverageGrid grid = new CoverageGrid(definition);
+        Progress progress = new Progress(err, "coverage", maps, err == System.err && System.console() != null,
+                System::nanoTime);
         for (int i = 0; i < maps; i++) {
             int cell = definition.cellOf(definition.values(MapGenerator.layout(first + i)));
             grid.add(cell);
+            // a map takes well under a millisecond: telling a console of every one would cost more than the map
+            if ((i + 1) % PROGRESS_EVERY == 0 || i + 1 == maps) {
+                progress.done(i + 1);
+            }
         }
         out.printf(Locale.ROOT, "Situation coverage of maps %d..%d (%s)%n", first, first + maps - 1,
                 options.value("--grid").orElse("the paper's grid"));
@@ -68,7 +76,7 @@ final class CoverageCommand implements Command {
                 CoverageHeatMap.writePng(grid, String.format(Locale.ROOT, "Situation coverage of %d random maps (seeds %d..%d)",
                         maps, first, first + maps - 1), png.get());
             } catch (IOException e) {
-                err.println("sitcov: coverage: could not write " + png.get() + ": " + e.getMessage());
+                err.println("sitcov: coverage: could not write --png " + png.get() + ": " + IoReason.of(e, png.get()) + ".");
                 return ExitCode.FAILURE;
             }
             out.println("Heat map written to " + png.get());
@@ -85,7 +93,7 @@ final class CoverageCommand implements Command {
         } catch (IllegalArgumentException e) {
             throw new UsageException("coverage: " + e.getMessage());
         } catch (IOException e) {
-            throw new UsageException("coverage: cannot read the grid " + file.get() + ": " + e.getMessage());
+            throw new UsageException("coverage: cannot read the grid " + file.get() + ": " + IoReason.of(e, file.get()) + ".");
         }
     }
 }

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
+import sitcov.report.IoReason;
 import sitcov.report.MapRenderer;
 import sitcov.report.OutputFile;
 import sitcov.world.MapDescription;
@@ -54,17 +55,21 @@ final class MapCommand implements Command {
 
         WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.load(name(), load.get());
         out.println(MapDescription.of(map));
+        Optional<Path> writing = save;
         try {
             if (save.isPresent()) {
                 OutputFile.writeString(save.get(), SituationFile.format(map));
                 out.println("Situation written to " + save.get());
             }
+            writing = png;
             if (png.isPresent()) {
                 new MapRenderer().writePng(map, png.get());
                 out.println("Map drawn to " + png.get());
             }
         } catch (IOException e) {
-            err.println("sitcov: map: could not write: " + e.getMessage());
+            Path file = writing.orElseThrow();
+            err.println("sitcov: map: could not write " + (file == save.orElse(null) ? "--save " : "--png ") + file + ": "
+                    + IoReason.of(e, file) + ".");
             return ExitCode.FAILURE;
         }
         return ExitCode.OK;

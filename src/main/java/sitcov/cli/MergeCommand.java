@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 import sitcov.experiment.Summary;
+import sitcov.report.IoReason;
 import sitcov.report.Manifest;
 import sitcov.report.ShardMerger;
 
@@ -52,10 +53,10 @@ final class MergeCommand implements Command {
             }
             SummaryTable.print(out, merged.config(), summary);
             VerdictPrinter.print(out, target);
-        } catch (IllegalArgumentException e) {
+        } catch (IllegalArgumentException | IllegalStateException e) {
             throw new UsageException("merge: " + e.getMessage() + ".");
         } catch (IOException e) {
-            err.println("sitcov: merge: could not write " + target + ": " + e.getMessage());
+            err.println("sitcov: merge: could not write " + target + ": " + IoReason.of(e, target) + ".");
             return ExitCode.FAILURE;
         }
         out.println("Merged " + shards.size() + " shards into " + target);

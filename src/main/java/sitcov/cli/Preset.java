@@ -59,8 +59,10 @@ record Preset(Path file, ExperimentConfig config) {
         } catch (java.nio.charset.CharacterCodingException e) {
             throw new UsageException("run: " + file + " is not UTF-8 text; a preset is a properties file such as"
                     + " experiments/smoke.properties.");
-        } catch (IOException | IllegalArgumentException e) {
-            throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage());
+        } catch (IOException e) {
+            throw new UsageException("run: cannot read the preset " + file + ": " + sitcov.report.IoReason.of(e, file) + ".");
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage() + ".");
         }
         duplicateKeys(text, file);
         if (replicationsOverride != null) {
@@ -85,10 +87,9 @@ record Preset(Path file, ExperimentConfig config) {
         String field = "master_seed";
         try {
             long seed = masterSeedOverride != null ? masterSeedOverride : Long.parseLong(required(p, "master_seed", file));
-            field = "candidates";
-            int candidates = Integer.parseInt(required(p, "candidates", file));
-            field = "replications";
-            int replications = Integer.parseInt(p.getProperty("replications", "1").strip());
+            int candidates = count(file, "candidates", required(p, "candidates", file), ExperimentConfig.MAX_CANDIDATES);
+            int replications = count(file, "replications", p.getProperty("replications", "1"),
+                    ExperimentConfig.MAX_REPLICATIONS);
             field = "faults";
             var faults = FaultSet.parse(p.getProperty("faults", "PAPER"));
             if (faults.isEmpty()) {
@@ -99,12 +100,10 @@ record Preset(Path file, ExperimentConfig config) {
             BudgetKind budget = BudgetKind.ofKey(p.getProperty("budget", "ticks").strip());
             field = "drivers";
             List<String> drivers = drivers(p, file, known);
-            field = "sweep";
-            List<Integer> sweep = sweep(p, file);
-            field = "candidate_limit";
+            List<Integer> sweep = sweep(p, file, replications);
             String limit = p.getProperty("candidate_limit");
             int candidateLimit = limit == null ? ExperimentConfig.defaultCandidateLimit(candidates, sweep)
-                    : Integer.parseInt(limit.strip());
+                    : count(file, "candidate_limit", limit, ExperimentConfig.MAX_CANDIDATE_LIMIT);
             field = "faulty_runs";
             FaultyRuns faultyRuns = FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.UNTIL_VERDICT.key()).strip());
             field = "grid";
@@ -115,7 +114,7 @@ record Preset(Path file, ExperimentConfig config) {
             return new ExperimentConfig(name, seed, candidates, replications, faults, budget, grid, drivers, sweep,
                     candidateLimit, faultyRuns, analysis);
         } catch (IOException e) {
-            throw new UsageException("run: " + file + ": cannot read its grid: " + e.getMessage());
+            throw new UsageException("run: " + file + ": cannot read its grid: " + sitcov.report.IoReason.of(e) + ".");
         } catch (NumberFormatException e) {
             throw new UsageException("run: " + file + ": " + field + "= needs a whole number, not '"
                     + p.getProperty(field, "").strip() + "'.");
@@ -157,24 +156,45 @@ record Preset(Path file, ExperimentConfig config) {
         return drivers;
     }
 
-    /** The candidate budgets of an effort sweep ({@code sweep=200,500,...}), or an empty list for a comparison. */
-    private static List<Integer> sweep(Properties p, Path file) throws UsageException {
+    /**
+     * A count of the preset from 1 to {@code max}, by the rule of the command line's counts
+     * ({@link Options#count}): the limit is named when it is passed, before anything is planned.
+     */
+    private static int count(Path file, String key, String text, int max) throws UsageException {
+        try {
+            long v = Long.parseLong(text.strip());
+            if (v >= 1 && v <= max) {
+                return (int) v;
+            }
+        } catch (NumberFormatException e) {
+            // reported below
+        }
+        throw new UsageException("run: " + file + ": " + key + "= needs a whole number from 1 to " + max + ", not '"
+                + text.strip() + "'.");
+    }
+
+    /**
+     * The candidate budgets of an effort sweep ({@code sweep=200,500,...}), or an empty list for a
+     * comparison; every budget is a count of candidates, and the map sets of all budgets together are
+     * held to the limit of replications.
+     */
+    private static List<Integer> sweep(Properties p, Path file, int replications) throws UsageException {
         String text = p.getProperty("sweep");
         if (text == null) {
             return List.of();
         }
         List<Integer> budgets = new ArrayList<>();
         for (String part : text.split(",")) {
-            try {
-                int v = Integer.parseInt(part.strip());
-                if (v < 1) {
-                    throw new NumberFormatException();
-                }
-                budgets.add(v);
-            } catch (NumberFormatException e) {
+            if (!part.strip().matches("[0-9]+")) {
                 throw new UsageException("run: " + file + ": sweep= needs positive candidate counts such as"
                         + " 200,500,1000, not '" + part.strip() + "'.");
             }
+            budgets.add(count(file, "sweep", part, ExperimentConfig.MAX_CANDIDATES));
+        }
+        if ((long) budgets.size() * replications > ExperimentConfig.MAX_REPLICATIONS) {
+            throw new UsageException("run: " + file + ": sweep= has " + budgets.size() + " budgets of " + replications
+                    + " map sets each (replications=), " + (long) budgets.size() * replications + " in all; the limit is "
+                    + ExperimentConfig.MAX_REPLICATIONS + ": lower replications= (or --replications) or the budgets.");
         }
         return budgets;
     }

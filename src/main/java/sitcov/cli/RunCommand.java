@@ -14,7 +14,10 @@ import java.util.stream.Stream;
 import sitcov.experiment.Drivers;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentRunner;
+import sitcov.experiment.Journal;
 import sitcov.experiment.Shard;
+import sitcov.report.FolderLock;
+import sitcov.report.IoReason;
 import sitcov.report.Manifest;
 import sitcov.report.ResultsFolder;
 import sitcov.report.ResultsRecorder;
@@ -24,9 +27,6 @@ import sitcov.report.ResultsRecorder;
  * {@code run --resume DIR} finishes one a kill interrupted; {@code --shard K/N} runs a share of it.
  */
 final class RunCommand implements Command {
-    /** Far beyond any sound experiment (Arcuri & Briand ask for 1000), short of an int overflow in the plan. */
-    private static final int MAX_REPLICATIONS = 1_000_000;
-
     private final Drivers drivers;
 
     RunCommand(Drivers drivers) {
@@ -41,7 +41,7 @@ final class RunCommand implements Command {
     @Override
     public String synopsis() {
         return "PRESET [--out DIR (default: target/results/PRESET-seedS)] [--seed MASTER] [--replications N] [--threads T]"
-                + " [--shard K/N]\n"
+                + " [--shard K/N] [--dry-run]\n"
                 + "       " + Main.PROGRAM + " run --resume DIR [--threads T]";
     }
 
@@ -53,9 +53,12 @@ final class RunCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--out", "--seed", "--replications", "--threads", "--shard",
-                "--resume"), Set.of());
+                "--resume"), Set.of("--dry-run"));
         int threads = options.threads(err);
         if (options.value("--resume").isPresent()) {
+            if (options.has("--dry-run")) {
+                throw new UsageException("run: --dry-run checks a preset before it runs; it does not go with --resume.");
+            }
             return resume(options, threads, out, err);
         }
         if (options.positional().size() != 1) {
@@ -63,9 +66,18 @@ final class RunCommand implements Command {
                     + " or resume a folder with 'run --resume DIR'.");
         }
         Preset preset = Preset.read(Preset.locate(options.positional().get(0)), options.seed("--seed").orElse(null),
-                options.count("--replications", 1, MAX_REPLICATIONS).orElse(null), drivers);
+                options.count("--replications", 1, ExperimentConfig.MAX_REPLICATIONS).orElse(null), drivers);
         ExperimentConfig config = preset.config();
-        Shard shard = shard(options);
+        Shard shard = shard(options, config);
+        if (options.has("--dry-run")) {
+            if (options.has("--out")) {
+                folder(options, config, shard);
+            }
+            ExperimentRunner runner = new ExperimentRunner(config, drivers, shard, Journal.empty(), threads, System::nanoTime,
+                    List.of());
+            out.println(plan(runner, config, shard, threads) + ": sound; a dry run, so nothing ran and nothing was written.");
+            return ExitCode.OK;
+        }
         Path folder = folder(options, config, shard);
         Manifest manifest = new Manifest(config, Version.current(), shard, false, false);
         Map<String, String> execution = execution(threads);
@@ -74,9 +86,11 @@ final class RunCommand implements Command {
         try {
             recorder = ResultsRecorder.create(folder, manifest, execution, System::nanoTime);
         } catch (IOException e) {
-            throw new UsageException("run: cannot create the results folder " + folder + ": " + e.getMessage()
+            throw new UsageException("run: cannot create the results folder " + folder + ": " + IoReason.of(e, folder)
                     + "; choose a writable --out.");
-        } catch (IllegalStateException | IllegalArgumentException e) {
+        } catch (IllegalStateException e) {
+            throw new UsageException("run: " + e.getMessage() + ".");
+        } catch (IllegalArgumentException e) {
             throw new UsageException("run: " + e.getMessage() + "; name a new folder with --out.");
         }
         return execute(recorder, folder, threads, "", out, err);
@@ -114,7 +128,7 @@ final class RunCommand implements Command {
             return execute(recorder, folder, threads, " (resumed with " + recorder.journal().size() + " maps judged before)",
                     out, err);
         } catch (IOException e) {
-            throw new UsageException("run: cannot resume " + folder + ": " + e.getMessage() + ".");
+            throw new UsageException("run: cannot resume " + folder + ": " + IoReason.of(e, folder) + ".");
         } catch (IllegalArgumentException | IllegalStateException e) {
             throw new UsageException("run: cannot resume " + folder + ": " + e.getMessage() + ".");
         }
@@ -127,12 +141,13 @@ final class RunCommand implements Command {
                 System::nanoTime);
         ExperimentRunner runner = new ExperimentRunner(config, drivers, manifest.shard(), recorder.journal(), threads,
                 System::nanoTime, List.of(recorder, progress));
-        err.println("run: " + config.name() + (manifest.shard().isWhole() ? "" : " shard " + manifest.shard()) + ": "
-                + runner.replications().size() + (config.isSweep() ? " map sets" : " replications") + ", drivers "
-                + String.join(", ", config.drivers()) + ", budget " + config.budget().key() + ", on " + threads
-                + " threads, into " + folder + note);
+        err.println(plan(runner, config, manifest.shard(), threads) + ", into " + folder + note);
         try {
             runner.run();
+        } catch (FolderLock.Lost e) {
+            err.println("sitcov: run: " + e.getMessage() + "; it stopped there, and what it had judged went with the"
+                    + " folder: run the preset again.");
+            return ExitCode.FAILURE;
         } catch (IllegalStateException | UncheckedIOException e) {
             err.println("sitcov: run: " + e.getMessage());
             err.println("sitcov: run: what was judged is kept in " + folder + "; continue with 'run --resume " + folder + "'.");
@@ -141,13 +156,20 @@ final class RunCommand implements Command {
             try {
                 recorder.close();
             } catch (IOException e) {
-                err.println("sitcov: run: could not close the journal in " + folder + ": " + e.getMessage());
+                err.println("sitcov: run: could not close the journal in " + folder + ": " + IoReason.of(e) + ".");
             }
         }
         SummaryTable.print(out, config, recorder.summary());
         VerdictPrinter.print(out, folder);
         out.println("Results in " + folder + " (" + progress.elapsed() + " on " + threads + " threads)");
         return ExitCode.OK;
+    }
+
+    /** What a run does, as its first line says it: "run: smoke shard 1/2: 1 replications, drivers …, on 2 threads". */
+    private static String plan(ExperimentRunner runner, ExperimentConfig config, Shard shard, int threads) {
+        return "run: " + config.name() + (shard.isWhole() ? "" : " shard " + shard) + ": " + runner.replications().size()
+                + (config.isSweep() ? " map sets" : " replications") + ", drivers " + String.join(", ", config.drivers())
+                + ", budget " + config.budget().key() + ", on " + threads + " threads";
     }
 
     static Map<String, String> execution(int threads) {
@@ -159,15 +181,25 @@ final class RunCommand implements Command {
         return m;
     }
 
-    private static Shard shard(Options options) throws UsageException {
+    /** The shard asked for; refused when it splits the replications into more shards than there are of them. */
+    private static Shard shard(Options options, ExperimentConfig config) throws UsageException {
         if (options.value("--shard").isEmpty()) {
             return Shard.WHOLE;
         }
+        Shard shard;
         try {
-            return Shard.parse(options.value("--shard").get());
+            shard = Shard.parse(options.value("--shard").get());
         } catch (IllegalArgumentException e) {
             throw new UsageException("run: --shard: " + e.getMessage() + ".");
         }
+        int units = config.planSize();
+        if (shard.n() > units) {
+            String what = config.isSweep() ? "map sets" : "replications";
+            throw new UsageException("run: --shard " + shard + ": " + config.name() + " has " + units + " " + what + ", so no"
+                    + " more than " + units + " shards (each needs one); use --shard K/" + units
+                    + (config.isSweep() ? "" : ", or run more with --replications N") + ".");
+        }
+        return shard;
     }
 
     private static Path folder(Options options, ExperimentConfig config, Shard shard) throws UsageException {
@@ -197,7 +229,7 @@ final class RunCommand implements Command {
             }
         } catch (IOException e) {
             throw new UsageException("run: cannot create a results folder under " + base.getParent() + ": "
-                    + e.getMessage() + "; run from a writable folder or name one with --out.");
+                    + IoReason.of(e, base.getParent()) + "; run from a writable folder or name one with --out.");
         }
     }
 
@@ -214,7 +246,7 @@ final class RunCommand implements Command {
         try (Stream<Path> s = Files.list(dir)) {
             return s.findAny().isEmpty();
         } catch (IOException e) {
-            throw new UsageException("cannot read the folder " + dir + ": " + e.getMessage());
+            throw new UsageException("cannot read the folder " + dir + ": " + IoReason.of(e, dir) + ".");
         }
     }
 }

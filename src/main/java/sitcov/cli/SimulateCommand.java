@@ -100,7 +100,9 @@ final class SimulateCommand implements Command {
             result = record.result();
             activations = record.activations();
         } catch (IOException | UncheckedIOException e) {
-            err.println("sitcov: simulate: could not write the trace " + trace.orElse(null) + ": " + e.getMessage());
+            err.println("sitcov: simulate: could not write the trace " + trace.orElse(null) + ": "
+                    + sitcov.report.IoReason.of(e instanceof UncheckedIOException u ? u.getCause() : (IOException) e,
+                    trace.orElse(null)) + ".");
             return ExitCode.FAILURE;
         }
         out.println(resultLine(result));
@@ -117,7 +119,7 @@ final class SimulateCommand implements Command {
                 RunRenderer renderer = new RunRenderer(PIXELS_PER_METRE);
                 renderer.writePng(renderer.render(map, recorder, result), png.get());
             } catch (IOException e) {
-                err.println("sitcov: simulate: could not write " + png.get() + ": " + e.getMessage());
+                err.println("sitcov: simulate: could not write " + png.get() + ": " + sitcov.report.IoReason.of(e, png.get()) + ".");
                 return ExitCode.FAILURE;
             }
             out.println("Run drawn to " + png.get());

@@ -17,7 +17,7 @@ final class Situations {
         } catch (SituationFormatException e) {
             throw new UsageException(command + ": " + e.getMessage());
         } catch (IOException e) {
-            throw new UsageException(command + ": cannot read " + file + ": " + e.getMessage());
+            throw new UsageException(command + ": cannot read " + file + ": " + sitcov.report.IoReason.of(e, file) + ".");
         }
     }
 

@@ -106,6 +106,23 @@ public record GridDefinition(List<Criterion> criteria, List<Bins> bins) {
         }
     }
 
+    /** A bin edge in metres, or {@code inf} for an open top; anything else is named with the fix. */
+    private static double edge(String text, String criterion) {
+        if (text.equalsIgnoreCase("inf")) {
+            return Double.POSITIVE_INFINITY;
+        }
+        try {
+            double v = Double.parseDouble(text);
+            if (Double.isFinite(v) && text.matches("[-+0-9.eE]+")) {
+                return v;
+            }
+        } catch (NumberFormatException e) {
+            // reported below
+        }
+        throw new IllegalArgumentException("criterion " + criterion + ": the edge '" + text + "' is not a number; edges"
+                + " are metres written as numbers such as 0 40 80.5, or inf for an open top");
+    }
+
     /** @throws IllegalArgumentException naming the line and what was expected */
     public static GridDefinition parse(List<String> lines, String source) {
         List<Criterion> criteria = new ArrayList<>();
@@ -136,7 +153,7 @@ public record GridDefinition(List<Criterion> criteria, List<Bins> bins) {
                 }
                 double[] edges = new double[f.length - 2];
                 for (int i = 2; i < f.length; i++) {
-                    edges[i - 2] = f[i].equalsIgnoreCase("inf") ? Double.POSITIVE_INFINITY : Double.parseDouble(f[i]);
+                    edges[i - 2] = edge(f[i], f[1]);
                 }
                 criteria.add(c);
                 bins.add(new Bins(edges));

@@ -42,6 +42,8 @@ import sitcov.stats.WilcoxonSignedRank.Alternative;
  */
 public final class Comparison {
     private static final double POWER = 0.8;
+    /** The note of every test of a folder that holds no replication (a shard of more shards than replications). */
+    static final String NO_REPLICATIONS = "there are no replications to compare";
 
     private final AnalysisPlan plan;
     private final int replications;
@@ -139,7 +141,7 @@ public final class Comparison {
         for (int f = 0; f < list.size(); f++) {
             long foundA = Arrays.stream(pair.foundA(f)).sum();
             long foundB = Arrays.stream(pair.foundB(f)).sum();
-            String note = foundA + foundB == 0 ? "found by neither driver"
+            String note = pair.mapsA().length == 0 ? NO_REPLICATIONS : foundA + foundB == 0 ? "found by neither driver"
                     : foundA == mapsA && foundB == mapsB ? "found on every map by both" : null;
             PairedDifference paired = paired(pair.shareA(f), pair.shareB(f), Alternative.TWO_SIDED, random);
             FisherExact.Result fisher = note == null ? FisherExact.test(foundA, mapsA - foundA, foundB, mapsB - foundB) : null;
@@ -161,8 +163,14 @@ public final class Comparison {
                 WilcoxonSignedRank.smallestP(d, alternative), Double.NaN, Double.NaN);
     }
 
-    /** Why a measure cannot be tested for this pair, or null: constant in both, or the numbers of an earlier measure. */
+    /**
+     * Why a measure cannot be tested for this pair, or null: no replications (an empty shard), constant in
+     * both, or the numbers of an earlier measure.
+     */
     private static String notTestable(double[] x, double[] y, List<double[][]> earlier) {
+        if (x.length == 0) {
+            return NO_REPLICATIONS;
+        }
         boolean constant = Arrays.stream(x).allMatch(v -> v == x[0]) && Arrays.stream(y).allMatch(v -> v == x[0]);
         if (constant) {
             return "it is " + plain(x[0]) + " in every replication of both";

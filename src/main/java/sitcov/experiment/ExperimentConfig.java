@@ -19,10 +19,28 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
                                BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
                                int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis) {
     public static final List<String> PAPER_DRIVERS = List.of("coverage-filter", "random");
+    /**
+     * Replications, or a sweep's map sets over all its budgets: far beyond any sound experiment (Arcuri &amp;
+     * Briand ask for 1000), and few enough that the plan of them all fits in memory at once.
+     */
+    public static final int MAX_REPLICATIONS = 1_000_000;
+    /** Candidates a first driver draws in a replication (a sweep budget too): 500 times the paper's 20 000. */
+    public static final int MAX_CANDIDATES = 10_000_000;
+    /** A later driver's candidate limit: ten times the most candidates, as the default limit is. */
+    public static final int MAX_CANDIDATE_LIMIT = 10 * MAX_CANDIDATES;
 
     public ExperimentConfig {
         if (candidates < 1 || replications < 1) {
             throw new IllegalArgumentException("an experiment needs at least one candidate and one replication");
+        }
+        if (candidates > MAX_CANDIDATES || sweep.stream().anyMatch(b -> b > MAX_CANDIDATES)
+                || candidateLimit > MAX_CANDIDATE_LIMIT) {
+            throw new IllegalArgumentException("an experiment draws at most " + MAX_CANDIDATES + " candidates a replication"
+                    + " (candidate_limit at most " + MAX_CANDIDATE_LIMIT + ")");
+        }
+        if ((long) replications * Math.max(1, sweep.size()) > MAX_REPLICATIONS) {
+            throw new IllegalArgumentException("an experiment has at most " + MAX_REPLICATIONS + " replications (map sets"
+                    + " over all budgets of a sweep)");
         }
         if (drivers.isEmpty() || drivers.stream().distinct().count() != drivers.size()) {
             throw new IllegalArgumentException("an experiment names one or more drivers, each once, got " + drivers);
@@ -74,6 +92,11 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
 
     public boolean isSweep() {
         return !sweep.isEmpty();
+    }
+
+    /** How many replications {@link #plan()} holds: a sweep's map sets over all its budgets. */
+    public int planSize() {
+        return replications * Math.max(1, sweep.size());
     }
 
     /**

@@ -1,5 +1,6 @@
 package sitcov.experiment;
 
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -54,6 +55,9 @@ public final class ExperimentRunner {
     /**
      * Runs every replication not yet finished; returns false if {@link #halt()} stopped it first
      * (nothing is emitted after a halt, so what listeners wrote is what a kill would leave).
+     *
+     * @throws UncheckedIOException as a listener threw it, when it could not write
+     * @throws IllegalStateException when anything else failed
      */
     public boolean run() {
         List<PlannedReplication> todo = replications();
@@ -93,6 +97,11 @@ public final class ExperimentRunner {
             Thread.currentThread().interrupt();
             halted = true;
         } catch (ExecutionException e) {
+            if (e.getCause() instanceof UncheckedIOException io) {
+                // a listener could not write (a full disk, a deleted folder): its own message says what and where
+                halted = true;
+                throw io;
+            }
             if (!(e.getCause() instanceof Halted)) {
                 halted = true;
                 throw new IllegalStateException("experiment " + config.name() + " failed: " + e.getCause(), e.getCause());

@@ -114,10 +114,19 @@ public final class MapRenderer {
         writeAtomically(render(map), file);
     }
 
-    /** Writes {@code image} as a PNG to {@code file}, whole or not at all (see {@link OutputFile}). */
+    /**
+     * Writes {@code image} as a PNG to {@code file}, whole or not at all (see {@link OutputFile}); a failure
+     * names the file and its cause, not ImageIO's "I/O error writing PNG file!".
+     */
     static void writeAtomically(BufferedImage image, Path file) throws IOException {
         try (OutputFile out = OutputFile.open(file)) {
-            if (!ImageIO.write(image, "png", out.stream())) {
+            boolean written;
+            try {
+                written = ImageIO.write(image, "png", out.stream());
+            } catch (IOException e) {
+                throw IoReason.about(file, e);
+            }
+            if (!written) {
                 throw new IOException("no PNG writer available to write " + file);
             }
             out.commit();

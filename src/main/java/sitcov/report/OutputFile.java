@@ -35,7 +35,16 @@ public final class OutputFile implements AutoCloseable {
         this.stream = stream;
     }
 
+    /** @throws IOException naming {@code file} and the reason ({@link IoReason#about}) */
     public static OutputFile open(Path file) throws IOException {
+        try {
+            return start(file);
+        } catch (IOException e) {
+            throw IoReason.about(file, e);
+        }
+    }
+
+    private static OutputFile start(Path file) throws IOException {
         Path target = file.toAbsolutePath();
         if (Files.isDirectory(target)) {
             throw new IOException(file + " is a folder; name a file");
@@ -70,13 +79,17 @@ public final class OutputFile implements AutoCloseable {
 
     /** Finishes the file: moves it into place, atomically where the file system can. */
     public void commit() throws IOException {
-        stream.close();
-        if (temp != null) {
-            try {
-                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
+        try {
+            stream.close();
+            if (temp != null) {
+                try {
+                    Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+                } catch (AtomicMoveNotSupportedException e) {
+                    Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
+                }
             }
+        } catch (IOException e) {
+            throw IoReason.about(target, e);
         }
         committed = true;
     }
@@ -102,7 +115,11 @@ public final class OutputFile implements AutoCloseable {
     /** Writes {@code text} as UTF-8 to {@code file}, whole or not at all. */
     public static void writeString(Path file, String text) throws IOException {
         try (OutputFile out = open(file)) {
-            out.stream().write(text.getBytes(StandardCharsets.UTF_8));
+            try {
+                out.stream().write(text.getBytes(StandardCharsets.UTF_8));
+            } catch (IOException e) {
+                throw IoReason.about(file, e);
+            }
             out.commit();
         }
     }

@@ -60,13 +60,18 @@ public final class ResultsRecorder implements ExperimentListener {
         // what a run killed before it wrote anything left
         ResultsFolder.sweepTemporaries(folder);
         JournalCheck check = JournalCheck.of(manifest);
-        OutputFile.writeString(folder.resolve(ResultsFolder.RUNS), check.header(new RunsCsv(manifest.config()).header(), true)
-                + "\n");
-        OutputFile.writeString(folder.resolve(ResultsFolder.DRIVERS), check.header(DriversCsv.HEADER, false) + "\n");
-        OutputFile.writeString(folder.resolve(ResultsFolder.TIMINGS), check.header(TimingsCsv.HEADER, false) + "\n");
-        // the manifest last: a folder that has one has its journal files too
-        manifest.complete(false).write(folder);
-        return new ResultsRecorder(folder, lock, manifest, Journal.empty(), execution, nanoClock);
+        try {
+            OutputFile.writeString(folder.resolve(ResultsFolder.RUNS), check.header(new RunsCsv(manifest.config()).header(),
+                    true) + "\n");
+            OutputFile.writeString(folder.resolve(ResultsFolder.DRIVERS), check.header(DriversCsv.HEADER, false) + "\n");
+            OutputFile.writeString(folder.resolve(ResultsFolder.TIMINGS), check.header(TimingsCsv.HEADER, false) + "\n");
+            // the manifest last: a folder that has one has its journal files too
+            manifest.complete(false).write(folder);
+            return new ResultsRecorder(folder, lock, manifest, Journal.empty(), execution, nanoClock);
+        } catch (IOException | RuntimeException e) {
+            lock.close(); // a full disk must not leave the folder claimed
+            throw e;
+        }
     }
 
     /**
@@ -110,8 +115,10 @@ public final class ResultsRecorder implements ExperimentListener {
         return summary;
     }
 
+    /** @throws FolderLock.Lost at the first event after the folder was deleted, before anything is written */
     @Override
     public void on(ExperimentEvent event) {
+        lock.verify();
         writer.on(event);
         if (event instanceof ExperimentEvent.Ended) {
             try {

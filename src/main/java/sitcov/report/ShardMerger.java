@@ -22,7 +22,10 @@ public final class ShardMerger {
     private ShardMerger() {
     }
 
-    /** @throws IllegalArgumentException naming the folder and what is wrong with it */
+    /**
+     * @throws IllegalArgumentException naming the folder and what is wrong with it, or when {@code out} holds files
+     * @throws IllegalStateException when another run or merge is writing into {@code out}
+     */
     public static Summary merge(List<Path> shards, Path out, Map<String, String> execution) throws IOException {
         if (shards.isEmpty()) {
             throw new IllegalArgumentException("name the shard folders to merge");
@@ -88,6 +91,12 @@ public final class ShardMerger {
         Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed, checked);
         Files.createDirectories(out);
         try (FolderLock lock = FolderLock.claim(out)) {
+            // checked under the lock: of two merges into one folder, the later finds the earlier's files
+            try (Stream<Path> files = Files.list(out)) {
+                if (files.anyMatch(f -> !f.getFileName().toString().equals(ResultsFolder.LOCK))) {
+                    throw new IllegalArgumentException(out + " holds files already; merge into a new or empty folder");
+                }
+            }
             merged.write(out);
             for (int k = 1; k <= n; k++) {
                 copySituations(byK[k], out);

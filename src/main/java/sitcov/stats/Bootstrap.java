@@ -19,6 +19,9 @@ public final class Bootstrap {
     /** The default number of resamples: enough for the 2.5 % and 97.5 % percentiles to settle. */
     public static final int DEFAULT_RESAMPLES = 2000;
 
+    /** The interval of an empty sample: nothing to estimate from, so NaN throughout. */
+    public static final ConfidenceInterval NOTHING = new ConfidenceInterval(Double.NaN, Double.NaN, Double.NaN);
+
     private Bootstrap() {
     }
 
@@ -29,12 +32,15 @@ public final class Bootstrap {
 
     /**
      * mean(x) − mean(y) for independent samples: each resample draws x.length values from x and
-     * y.length values from y, each with replacement.
+     * y.length values from y, each with replacement. An empty sample gives {@link #NOTHING}, drawing nothing.
      */
     public static ConfidenceInterval meanDifference(double[] x, double[] y, int resamples, double confidence,
             RandomGenerator random) {
         check(x, resamples, confidence);
         check(y, resamples, confidence);
+        if (x.length == 0 || y.length == 0) {
+            return NOTHING;
+        }
         double[] replicates = new double[resamples];
         for (int b = 0; b < resamples; b++) {
             replicates[b] = resampledMean(x, random) - resampledMean(y, random);
@@ -47,7 +53,7 @@ public final class Bootstrap {
         return pairedMeanDifference(x, y, DEFAULT_RESAMPLES, 0.95, random);
     }
 
-    /** The mean of the paired differences x[i] − y[i]: each resample draws whole pairs. */
+    /** The mean of the paired differences x[i] − y[i]: each resample draws whole pairs; no pairs give {@link #NOTHING}. */
     public static ConfidenceInterval pairedMeanDifference(double[] x, double[] y, int resamples, double confidence,
             RandomGenerator random) {
         if (x.length != y.length) {
@@ -58,6 +64,9 @@ public final class Bootstrap {
             d[i] = x[i] - y[i];
         }
         check(d, resamples, confidence);
+        if (d.length == 0) {
+            return NOTHING;
+        }
         double[] replicates = new double[resamples];
         for (int b = 0; b < resamples; b++) {
             replicates[b] = resampledMean(d, random);
@@ -81,9 +90,6 @@ public final class Bootstrap {
     }
 
     private static void check(double[] values, int resamples, double confidence) {
-        if (values.length == 0) {
-            throw new IllegalArgumentException("a sample needs at least one value");
-        }
         for (double v : values) {
             if (!Double.isFinite(v)) {
                 throw new IllegalArgumentException("values must be finite: " + v);

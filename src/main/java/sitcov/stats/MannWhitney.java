@@ -32,16 +32,16 @@ public final class MannWhitney {
      *
      * @param u U of the first sample: pairs where it is larger, plus half the tied pairs
      * @param z the continuity-corrected normal deviate, or NaN when the p-value is exact
-     * @param p the two-sided p-value
+     * @param p the two-sided p-value; NaN when a sample is empty (nothing to rank, nothing claimed)
      * @param exact whether p comes from the exact permutation distribution
      */
     public record Result(double u, double z, double p, boolean exact) {
     }
 
-    /** Tests {@code x} against {@code y}; both must be non-empty and free of NaN. */
+    /** Tests {@code x} against {@code y}, both free of NaN; an empty sample gives NaN throughout. */
     public static Result test(double[] x, double[] y) {
         if (x.length == 0 || y.length == 0) {
-            throw new IllegalArgumentException("both samples need at least one value");
+            return new Result(Double.NaN, Double.NaN, Double.NaN, false);
         }
         int m = x.length;
         int n = y.length;

@@ -49,19 +49,23 @@ public final class Tost {
         return ofDifferences(d, margin, alpha);
     }
 
-    /** The TOST of paired differences {@code d} against ±{@code margin}. */
+    /**
+     * The TOST of paired differences {@code d} against ±{@code margin}. Fewer than two pairs give no
+     * standard error to test with or to build an interval from: NaN p-values and interval ends.
+     */
     public static Result ofDifferences(double[] d, double margin, double alpha) {
         if (d.length < 2) {
-            throw new IllegalArgumentException("a paired t-test needs at least two pairs, got " + d.length);
+            checkLevels(margin, alpha);
+            return new Result(Descriptive.mean(d), margin, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN);
         }
         return ofSummary(Descriptive.mean(d), Math.sqrt(Descriptive.variance(d)), d.length, margin, alpha);
     }
 
     /** The TOST from the mean and standard deviation of n paired differences. */
     public static Result ofSummary(double mean, double sd, int n, double margin, double alpha) {
-        if (!(margin > 0) || !(alpha > 0 && alpha < 0.5) || n < 2 || !(sd >= 0)) {
-            throw new IllegalArgumentException("TOST needs margin > 0, 0 < alpha < 0.5, n >= 2 and sd >= 0: margin="
-                    + margin + ", alpha=" + alpha + ", n=" + n + ", sd=" + sd);
+        checkLevels(margin, alpha);
+        if (n < 2 || !(sd >= 0)) {
+            throw new IllegalArgumentException("TOST needs n >= 2 and sd >= 0: n=" + n + ", sd=" + sd);
         }
         if (sd == 0) {
             return new Result(mean, margin, Double.NaN, Double.NaN, Double.NaN, mean, mean);
@@ -72,5 +76,12 @@ public final class Tost {
         double pUpper = StudentT.cdf((mean - margin) / se, df);
         double q = StudentT.quantile(1 - alpha, df);
         return new Result(mean, margin, Math.max(pLower, pUpper), pLower, pUpper, mean - q * se, mean + q * se);
+    }
+
+    private static void checkLevels(double margin, double alpha) {
+        if (!(margin > 0) || !(alpha > 0 && alpha < 0.5)) {
+            throw new IllegalArgumentException("TOST needs margin > 0 and 0 < alpha < 0.5: margin=" + margin + ", alpha="
+                    + alpha);
+        }
     }
 }

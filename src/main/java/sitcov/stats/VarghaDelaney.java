@@ -13,10 +13,13 @@ public final class VarghaDelaney {
     private VarghaDelaney() {
     }
 
-    /** Â12 of {@code x} over {@code y}; 0.5 means neither tends to be larger. */
+    /**
+     * Â12 of {@code x} over {@code y}; 0.5 means neither tends to be larger. NaN when either sample is
+     * empty: there is no pair to count (a shard or a folder with no replications still gets its tables).
+     */
     public static double a12(double[] x, double[] y) {
         if (x.length == 0 || y.length == 0) {
-            throw new IllegalArgumentException("both samples need at least one value");
+            return Double.NaN;
         }
         // Direct pair counting: O(mn), exact in rational arithmetic up to the one final division.
         long twiceWins = 0;
@@ -35,10 +38,14 @@ public final class VarghaDelaney {
      * Vargha &amp; Delaney's (2000) labels: Â12 ≥ 0.71 (or ≤ 0.29) large, ≥ 0.64 (≤ 0.36)
      * medium, ≥ 0.56 (≤ 0.44) small, anything nearer 0.5 negligible. The thresholds are compared
      * with Â12 itself, not with |Â12 − 0.5|, so that exact fractions such as 0.44 = 44/100 land on
-     * the boundary they are written as rather than one rounding error beside it.
+     * the boundary they are written as rather than one rounding error beside it. NaN (Â12 of an
+     * empty sample) has no magnitude: {@link EffectSize#UNDEFINED}.
      */
     public static EffectSize magnitude(double a12) {
-        if (Double.isNaN(a12) || a12 < 0 || a12 > 1) {
+        if (Double.isNaN(a12)) {
+            return EffectSize.UNDEFINED;
+        }
+        if (a12 < 0 || a12 > 1) {
             throw new IllegalArgumentException("A12 must be in [0, 1]: " + a12);
         }
         if (a12 >= 0.71 || a12 <= 0.29) {

@@ -10,7 +10,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import sitcov.report.ResultsFolder;
 
-/** Sizes, numbers and messages: every mistake is one line that names the limit or the fix, and exit 2. */
 class InputLimitsTest {
     @TempDir
     Path dir;
@@ -76,7 +75,7 @@ class InputLimitsTest {
     @Test
     void theOptionsOfAnUnknownOptionsMessageComeInAFixedOrder() {
         CliRunner r = CliRunner.run("run", "smoke", "--sed", "1");
-        assertTrue(r.err().contains("the options are --out, --replications, --resume, --seed, --shard, --threads."), r.err());
+        assertTrue(r.err().contains("the options are --dry-run, --out, --replications, --resume, --seed, --shard, --threads."), r.err());
     }
 
     @Test
@@ -90,5 +89,31 @@ class InputLimitsTest {
                 + "\ncriterion previous-junction-target" + edges + "\n");
         refused("a grid of more than 1000000 cells is too large to count", "coverage", "--maps", "10", "--grid",
                 grid.toString());
+    }
+
+    @Test
+    void aPresetsCountsHaveTheLimitsOfTheCommandLineAndAreRefusedBeforeAnythingIsPlanned() throws Exception {
+        String base = Files.readString(Path.of(ResultsFolders.TINY));
+        String[][] cases = {
+            {"replications=2147483647", "replications= needs a whole number from 1 to 1000000, not '2147483647'"},
+            {"replications=0", "replications= needs a whole number from 1 to 1000000, not '0'"},
+            {"candidates=99999999999", "candidates= needs a whole number from 1 to 10000000, not '99999999999'"},
+            {"candidate_limit=2000000000", "candidate_limit= needs a whole number from 1 to 100000000"},
+            {"sweep=5,20000000", "sweep= needs a whole number from 1 to 10000000, not '20000000'"},
+        };
+        for (String[] c : cases) {
+            String key = c[0].substring(0, c[0].indexOf('='));
+            Path preset = dir.resolve("counts.properties");
+            Files.writeString(preset, base.replaceAll("(?m)^" + key + "=.*$", "") + "\n" + c[0] + "\n");
+            refused(c[1], "run", preset.toString(), "--out", dir.resolve("never").toString());
+        }
+        // a sweep's map sets over all its budgets are held to the limit of replications
+        Path sweep = dir.resolve("sweep.properties");
+        Files.writeString(sweep, base.replace("replications=3", "replications=400000") + "sweep=5,10,20\n");
+        refused("sweep= has 3 budgets of 400000 map sets each (replications=), 1200000 in all; the limit is 1000000",
+                "run", sweep.toString(), "--out", dir.resolve("never").toString());
+        refused("--replications needs a whole number from 1 to 1000000, not '1000001'", "run", ResultsFolders.TINY,
+                "--replications", "1000001");
+        assertTrue(!Files.exists(dir.resolve("never")), "nothing ran");
     }
 }

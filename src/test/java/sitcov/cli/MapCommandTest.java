@@ -3,6 +3,7 @@ package sitcov.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -119,5 +120,21 @@ class MapCommandTest {
         assertEquals(ExitCode.USAGE, r.exitCode());
         assertTrue(r.err().contains("--png and --save both name"), r.err());
         assertTrue(!Files.exists(same));
+    }
+
+    @Test
+    void aFullDiskIsNamedWithTheFileItStopped() throws Exception {
+        assumeTrue(Files.exists(Path.of("/dev/full")), "a device that is always full");
+        Path png = folder.resolve("map.png");
+        CliRunner save = CliRunner.run("map", "--seed", "5", "--save", "/dev/full", "--png", png.toString());
+        assertEquals(1, save.exitCode());
+        assertTrue(save.err().contains("sitcov: map: could not write --save /dev/full: no space left on device."),
+                save.err());
+        assertFalse(Files.exists(png), "it stopped at the first file it could not write");
+        CliRunner drawn = CliRunner.run("map", "--seed", "5", "--png", "/dev/full");
+        assertEquals(1, drawn.exitCode());
+        assertTrue(drawn.err().contains("sitcov: map: could not write --png /dev/full: no space left on device."),
+                drawn.err());
+        assertFalse(drawn.err().contains("I/O error writing PNG file!"), drawn.err());
     }
 }

@@ -106,4 +106,19 @@ class MergeCommandTest {
         assertEquals(0, r.exitCode(), r.err());
         ResultsFolders.assertSameResults(ResultsFolders.tinyReference(), merged);
     }
+
+    @Test
+    void ofTwoMergesIntoOneFolderOneWritesItAndTheOtherIsRefusedInOneLine(@TempDir Path out) throws Exception {
+        Path merged = out.resolve("merged");
+        List<CliRunner> r = ConcurrentRunsTest.twice("merge", shard(1), shard(2), shard(3), "--out", merged.toString());
+        CliRunner winner = r.get(0).exitCode() == 0 ? r.get(0) : r.get(1);
+        CliRunner loser = winner == r.get(0) ? r.get(1) : r.get(0);
+        assertEquals(0, winner.exitCode(), winner.err());
+        assertEquals(2, loser.exitCode(), loser.err());
+        // refused by the lock while the other writes, or by what it wrote once it is done
+        assertTrue(loser.err().contains("merge: another run or merge is writing into " + merged)
+                || loser.err().contains("holds files already") || loser.err().contains("is not an empty folder"), loser.err());
+        assertTrue(!loser.err().contains("Exception") && !loser.err().contains("\tat "), loser.err());
+        ResultsFolders.assertSameResults(ResultsFolders.tinyReference(), merged);
+    }
 }

@@ -1,15 +1,25 @@
 package sitcov.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Comparator;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.experiment.Candidate;
+import sitcov.experiment.Drivers;
 import sitcov.report.ResultsFolder;
 
 class RunCommandTest {
@@ -101,7 +111,7 @@ class RunCommandTest {
         String[][] cases = {
             {"drivers=coverage-filter,best", "unknown driver 'best'; the drivers are coverage-filter, random, every-other"},
             {"drivers=random,random", "each once"},
-            {"candidates=many", "candidates= needs a whole number, not 'many'"},
+            {"candidates=many", "candidates= needs a whole number from 1 to 10000000, not 'many'"},
             {"colour=blue", "unknown key 'colour'"},
             {"sweep=5,-1", "sweep= needs positive candidate counts"},
             {"candidate_limit=3", "candidate_limit 3 is below the first driver's 12 candidates"},
@@ -132,6 +142,77 @@ class RunCommandTest {
             CliRunner r = CliRunner.run("run", ResultsFolders.TINY, "--shard", shard, "--out", dir.resolve("x").toString());
             assertEquals(2, r.exitCode(), shard);
             assertTrue(r.err().contains("a shard is K/N"), r.err());
+        }
+    }
+
+    @Test
+    void moreShardsThanReplicationsAreRefusedAtOnceNamingTheLimit() {
+        // tiny has 3 replications: a fourth shard would hold none, so it would have nothing to compare or merge
+        Path out = dir.resolve("x");
+        CliRunner r = CliRunner.run("run", ResultsFolders.TINY, "--shard", "4/4", "--out", out.toString());
+        assertEquals(2, r.exitCode(), r.err());
+        assertTrue(r.err().contains("run: --shard 4/4: tiny has 3 replications, so no more than 3 shards (each needs one);"
+                + " use --shard K/3, or run more with --replications N."), r.err());
+        assertFalse(Files.exists(out), "refused before anything was written");
+        CliRunner sweep = CliRunner.run("run", "src/test/resources/presets/tiny-sweep.properties", "--shard", "1/5",
+                "--out", out.toString());
+        assertEquals(2, sweep.exitCode(), sweep.err());
+        assertTrue(sweep.err().contains("has 4 map sets, so no more than 4 shards"), sweep.err());
+    }
+
+    @Test
+    void aDryRunChecksThePresetAndTheShardAndWritesNothing() {
+        Path out = dir.resolve("never");
+        CliRunner ok = CliRunner.run("run", ResultsFolders.TINY, "--shard", "3/3", "--dry-run", "--out", out.toString(),
+                "--threads", "1");
+        assertEquals(0, ok.exitCode(), ok.err());
+        assertTrue(ok.out().startsWith("run: tiny shard 3/3: 1 replications, drivers coverage-filter, random, budget ticks,"
+                + " on 1 threads: sound; a dry run"), ok.out());
+        assertFalse(Files.exists(out));
+        CliRunner bad = CliRunner.run("run", ResultsFolders.TINY, "--shard", "4/4", "--dry-run");
+        assertEquals(2, bad.exitCode());
+        assertTrue(bad.err().contains("no more than 3 shards"), bad.err());
+        assertEquals(2, CliRunner.run("run", "--resume", dir.toString(), "--dry-run").exitCode());
+    }
+
+    @Test
+    void aResultsFolderDeletedWhileTheRunWritesStopsItWithOneMessageAndNoTrace() throws Exception {
+        Path out = dir.resolve("doomed");
+        // a driver that deletes the folder after its first judged map, as an 'rm -r' beside the run would
+        Drivers drivers = Drivers.standard().with("deleting", () -> session -> {
+            int judged = 0;
+            while (session.budgetLeft()) {
+                Candidate c = session.nextCandidate();
+                if (c.runnable()) {
+                    session.run(c);
+                    if (judged++ == 0) {
+                        deleteTree(out);
+                    }
+                }
+            }
+        });
+        Path preset = dir.resolve("doomed.properties");
+        Files.writeString(preset, "master_seed=3\ncandidates=6\nfaults=19\ndrivers=deleting\n"
+                + "grid=experiments/paper-grid.txt\n");
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = new Main(List.of(new RunCommand(drivers))).execute(new String[] {"run", preset.toString(), "--out",
+                out.toString(), "--threads", "1"}, new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8));
+        String message = err.toString(StandardCharsets.UTF_8);
+        assertEquals(ExitCode.FAILURE, code, message);
+        assertTrue(message.contains("sitcov: run: the results folder " + out + " was deleted (or its .sitcov.lock removed)"
+                + " while this command wrote into it; it stopped there"), message);
+        assertFalse(message.contains("Exception") || message.contains("\tat "), message);
+        assertFalse(Files.exists(out), "nothing made the folder again");
+    }
+
+    private static void deleteTree(Path folder) {
+        try (Stream<Path> files = Files.walk(folder)) {
+            for (Path f : files.sorted(Comparator.reverseOrder()).toList()) {
+                Files.delete(f);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
         }
     }
 }

@@ -183,4 +183,24 @@ public class ComparisonTest {
                 Comparison.of(SIX, s, new SplittableRandom(9)).measures());
         assertEquals(Measure.values().length, Comparison.of(SIX, s, new SplittableRandom(9)).measures().size());
     }
+
+    @Test
+    void noReplicationsLeaveEveryTestNotTestableRatherThanFailing() {
+        // what a shard of more shards than replications holds (run refuses such a shard now; older folders remain)
+        Comparison c = Comparison.of(SIX, new Summary(SIX, List.of()), new SplittableRandom(3));
+        assertEquals(0, c.replications());
+        assertEquals(Measure.values().length, c.measures().size());
+        for (MeasureTest m : c.measures()) {
+            assertEquals(Finding.NOT_TESTABLE, m.finding(), m.measure().toString());
+            assertEquals("there are no replications to compare", m.note());
+            assertTrue(Double.isNaN(m.a12()) && Double.isNaN(m.paired().difference().estimate()));
+            assertEquals(sitcov.stats.EffectSize.UNDEFINED, m.effect());
+        }
+        assertEquals(2, c.faults().size());
+        for (FaultTest f : c.faults()) {
+            assertEquals(Finding.NOT_TESTABLE, f.finding());
+            assertEquals("there are no replications to compare", f.note());
+        }
+        assertEquals(0, c.familySize());
+    }
 }

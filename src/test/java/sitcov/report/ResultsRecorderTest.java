@@ -2,6 +2,7 @@ package sitcov.report;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -17,8 +18,10 @@ import sitcov.experiment.BudgetKind;
 import sitcov.experiment.Candidate;
 import sitcov.experiment.Drivers;
 import sitcov.experiment.ExperimentConfig;
-import sitcov.experiment.FaultyRuns;
+import sitcov.experiment.ExperimentEvent;
+import sitcov.experiment.ExperimentListener;
 import sitcov.experiment.ExperimentRunner;
+import sitcov.experiment.FaultyRuns;
 import sitcov.experiment.Journal;
 import sitcov.experiment.MapId;
 import sitcov.experiment.MapRun;
@@ -113,5 +116,54 @@ class ResultsRecorderTest {
 
         Files.writeString(kept, text);
         ResultsFinisher.report(dir);
+    }
+
+    @Test
+    void aShardWithNoReplicationsCompletesItsFolderAndSaysThereIsNothingToCompare() throws Exception {
+        // two replications in three shards: shard 3/3 has none (run refuses it now; a folder an older version left remains)
+        ExperimentConfig config = new ExperimentConfig("empty", 5, 3, 2, FaultSet.parse("19"), BudgetKind.TICKS,
+                GridDefinition.paper());
+        Shard third = new Shard(3, 3);
+        ResultsRecorder recorder = ResultsRecorder.create(dir, new Manifest(config, "test", third, false, false), Map.of(),
+                System::nanoTime);
+        ExperimentRunner runner = new ExperimentRunner(config, Drivers.standard(), third, recorder.journal(), 1,
+                System::nanoTime, List.of(recorder));
+        assertEquals(List.of(), runner.replications());
+        assertTrue(runner.run());
+        recorder.close();
+        assertTrue(ResultsRecorder.isComplete(dir));
+        assertEquals(0, recorder.summary().results().size());
+        assertTrue(Files.readString(dir.resolve(ResultsFolder.VERDICT)).contains("not testable: there are no replications"
+                + " to compare"), Files.readString(dir.resolve(ResultsFolder.VERDICT)));
+        assertEquals(1, Files.readAllLines(dir.resolve(ResultsFolder.RUNS)).size(), "runs.csv: its header alone");
+    }
+
+    @Test
+    void aRunWhoseFolderWasDeletedStopsAtItsNextWrite() throws Exception {
+        ExperimentConfig config = new ExperimentConfig("deleted", 5, 4, 1, FaultSet.parse("19"), BudgetKind.TICKS,
+                GridDefinition.paper(), List.of("random"), List.of(), 4, FaultyRuns.UNTIL_VERDICT);
+        Path folder = dir.resolve("results");
+        ResultsRecorder recorder = ResultsRecorder.create(folder, new Manifest(config, "test", Shard.WHOLE, false, false),
+                Map.of(), System::nanoTime);
+        int[] judged = {0};
+        // after the first judged map is journalled, the folder goes, as an 'rm -r' beside the run would take it
+        ExperimentListener remover = event -> {
+            if (event instanceof ExperimentEvent.MapJudged && judged[0]++ == 0) {
+                try (var files = Files.walk(folder)) {
+                    for (Path f : files.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                        Files.delete(f);
+                    }
+                } catch (java.io.IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+            }
+        };
+        ExperimentRunner runner = new ExperimentRunner(config, Drivers.standard(), Shard.WHOLE, recorder.journal(), 1,
+                System::nanoTime, List.of(recorder, remover));
+        FolderLock.Lost lost = assertThrows(FolderLock.Lost.class, runner::run);
+        recorder.close();
+        assertTrue(lost.getMessage().contains("the results folder " + folder + " was deleted"), lost.getMessage());
+        assertEquals(1, judged[0], "nothing was judged into the void after the next write found the folder gone");
+        assertFalse(Files.exists(folder), "and nothing made the folder again");
     }
 }

@@ -2,6 +2,7 @@ package sitcov.stats;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.SplittableRandom;
@@ -73,5 +74,15 @@ class BootstrapTest {
         assertEquals(ci.estimate() + 1.959964 * se, ci.high(), 0.25 * se);
         // Pairing removes the shared variation: the unpaired interval on the same data is far wider.
         assertTrue(Bootstrap.meanDifference(x, y, new SplittableRandom(6)).width() > 2 * ci.width());
+    }
+
+    @Test
+    void noValuesGiveAnIntervalOfNothingAndDrawNothing() {
+        SplittableRandom used = new SplittableRandom(9);
+        assertSame(Bootstrap.NOTHING, Bootstrap.pairedMeanDifference(new double[0], new double[0], used));
+        assertSame(Bootstrap.NOTHING, Bootstrap.meanDifference(new double[0], new double[] {1, 2}, used));
+        assertTrue(Double.isNaN(Bootstrap.NOTHING.estimate()) && Double.isNaN(Bootstrap.NOTHING.low())
+                && Double.isNaN(Bootstrap.NOTHING.high()));
+        assertEquals(new SplittableRandom(9).nextLong(), used.nextLong(), "the stream is where it was");
     }
 }

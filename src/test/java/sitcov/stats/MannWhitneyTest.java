@@ -82,4 +82,12 @@ class MannWhitneyTest {
         assertArrayEquals(new long[] {1, 1, 2, 1, 1}, MannWhitney.uCounts(2, 2));
         assertEquals(137_846_528_820L, Arrays.stream(MannWhitney.uCounts(20, 20)).sum());
     }
+
+    @Test
+    void anEmptySampleGivesNoTestRatherThanAnError() {
+        MannWhitney.Result r = MannWhitney.test(new double[0], new double[] {1, 2, 3});
+        assertTrue(Double.isNaN(r.p()));
+        assertTrue(Double.isNaN(r.u()));
+        assertFalse(r.exact());
+    }
 }

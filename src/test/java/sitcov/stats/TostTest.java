@@ -49,4 +49,15 @@ class TostTest {
         Tost.Result r = Tost.ofDifferences(new double[] {95, 96, 97, 98, 96}, 5, 0.05);
         assertTrue(r.p() > 0.99, "p=" + r.p());
     }
+
+    @Test
+    void fewerThanTwoPairsGiveNoTestAndNoInterval() {
+        Tost.Result none = Tost.ofDifferences(new double[0], 1, 0.05);
+        assertTrue(Double.isNaN(none.p()) && Double.isNaN(none.low()) && Double.isNaN(none.high()));
+        assertTrue(Double.isNaN(none.mean()));
+        Tost.Result one = Tost.paired(new double[] {4}, new double[] {3}, 1, 0.05);
+        assertEquals(1, one.mean(), 0);
+        assertTrue(Double.isNaN(one.p()) && Double.isNaN(one.low()), "one pair has no spread to test with");
+        assertFalse(one.equivalent(0.05));
+    }
 }

@@ -1,6 +1,8 @@
 package sitcov.stats;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
@@ -61,5 +63,15 @@ class VarghaDelaneyTest {
     void labelsAreLowerCase() {
         assertEquals("negligible", EffectSize.NEGLIGIBLE.label());
         assertEquals("large", EffectSize.LARGE.label());
+    }
+
+    @Test
+    void anEmptySampleHasNoA12AndItsMagnitudeIsUndefined() {
+        // no pair to count: a shard with no replications still gets its tables, with nothing claimed
+        assertTrue(Double.isNaN(VarghaDelaney.a12(new double[0], new double[] {1, 2})));
+        assertTrue(Double.isNaN(VarghaDelaney.a12(new double[] {1}, new double[0])));
+        assertEquals(EffectSize.UNDEFINED, VarghaDelaney.magnitude(Double.NaN));
+        assertEquals("undefined", EffectSize.UNDEFINED.label());
+        assertThrows(IllegalArgumentException.class, () -> VarghaDelaney.magnitude(1.5), "out of range is still refused");
     }
 }

@@ -30,6 +30,11 @@ final class VerdictText {
 
     static List<String> lines(Comparison comparison, List<SituationFaults.Uniformity> uniformity, BudgetKind budget) {
         List<String> out = new ArrayList<>();
+        if (comparison.replications() == 0) {
+            out.add("No replications in this folder (a shard that got none), so nothing to compare: merge it with the"
+                    + " other shards (merge SHARD... --out DIR) for the verdict.");
+            return out;
+        }
         Optional<MeasureTest> primary = comparison.primary();
         if (primary.isPresent()) {
             out.add("Primary question (declared in the preset): " + question(comparison.plan(), budget));

@@ -2,6 +2,7 @@ package sitcov.report;
 
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * The files of an experiment's results folder: the one place their names are written down. The
@@ -42,7 +43,7 @@ public final class ResultsFolder {
     public static final String UNIFORMITY = "uniformity.csv";
     /** Everything on one self-contained page: verdict, tables, figures, grid, the maps that found each fault. */
     public static final String REPORT = "report.html";
-    public static final String FIG_FORESTPLOT = "fig-faults-odds-ratios.png";
+    private static final String FOREST_PLOT = "fig-faults-odds-ratios";
     public static final String FIG_MEASURES = "fig-measures-by-driver.png";
     public static final String FIG_DISCOVERY = "fig-faults-found-vs-ticks.png";
     public static final String SWEEP = "sweep.csv";
@@ -55,6 +56,25 @@ public final class ResultsFolder {
     public static final List<String> TIMED = List.of(TIMINGS, EXECUTION, FIG3_TIME);
 
     private ResultsFolder() {
+    }
+
+    /**
+     * The forest plot of one pair of drivers' per-fault odds ratios, as in
+     * {@code fig-faults-odds-ratios-01-coverage-filter-vs-random.png}: pairs are numbered from 1, the primary
+     * question's pair first, so that name order is the order of the pairs (see {@code StatsFigures}).
+     */
+    public static String forestPlot(int number, String driverA, String driverB) {
+        return String.format(Locale.ROOT, "%s-%02d-%s-vs-%s.png", FOREST_PLOT, number, fileSafe(driverA), fileSafe(driverB));
+    }
+
+    /** Whether a file of the folder is a forest plot, of this naming or of the single one older versions drew. */
+    static boolean isForestPlot(String fileName) {
+        return fileName.startsWith(FOREST_PLOT) && fileName.endsWith(".png");
+    }
+
+    /** A driver's name as part of a file name: presets name drivers in letters and hyphens, anything else becomes _. */
+    private static String fileSafe(String name) {
+        return name.replaceAll("[^A-Za-z0-9._-]", "_");
     }
 
     public static Path situation(Path folder, String name) {

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
+import java.util.Locale;
 
 /**
  * The files of an experiment's results folder: the one place their names are written down. The
@@ -46,7 +47,7 @@ public final class ResultsFolder {
     public static final String UNIFORMITY = "uniformity.csv";
     /** Everything on one self-contained page: verdict, tables, figures, grid, the maps that found each fault. */
     public static final String REPORT = "report.html";
-    public static final String FIG_FORESTPLOT = "fig-faults-odds-ratios.png";
+    private static final String FOREST_PLOT = "fig-faults-odds-ratios";
     public static final String FIG_MEASURES = "fig-measures-by-driver.png";
     public static final String FIG_DISCOVERY = "fig-faults-found-vs-ticks.png";
     public static final String SWEEP = "sweep.csv";
@@ -60,7 +61,7 @@ public final class ResultsFolder {
 
     /** Every file name sitcov writes at the top of a results folder. */
     private static final List<String> NAMES = List.of(RUNS, DRIVERS, TIMINGS, MANIFEST, EXECUTION, GRID, SUMMARY, TABLE2,
-            COVERAGE_CURVE, FIG2, FIG3, FIG3_TIME, STATS, VERDICT, DISCOVERY, CELL_FAULTS, UNIFORMITY, REPORT, FIG_FORESTPLOT,
+            COVERAGE_CURVE, FIG2, FIG3, FIG3_TIME, STATS, VERDICT, DISCOVERY, CELL_FAULTS, UNIFORMITY, REPORT,
             FIG_MEASURES, FIG_DISCOVERY, SWEEP, FIG4);
 
     /**
@@ -68,7 +69,7 @@ public final class ResultsFolder {
      * writes: at the top, in situations/ and in replays/. A kill leaves them; nothing else matches.
      */
     private static final Pattern TOP_TEMP = Pattern.compile("\\.(" + String.join("|", NAMES.stream().map(Pattern::quote)
-            .toList()) + ")\\d+\\.tmp");
+            .toList()) + "|" + Pattern.quote(FOREST_PLOT) + "-\\d+-[A-Za-z0-9._-]+-vs-[A-Za-z0-9._-]+\\.png)\\d+\\.tmp");
     private static final Pattern SITUATION_TEMP = Pattern.compile("\\.[A-Za-z0-9][A-Za-z0-9._-]*\\.situation\\d+\\.tmp");
     private static final Pattern REPLAY_TEMP = Pattern.compile("\\.fault-\\d+\\.png\\d+\\.tmp");
 
@@ -108,6 +109,25 @@ public final class ResultsFolder {
             return files.map(f -> f.getFileName().toString())
                     .allMatch(n -> n.equals(LOCK) || TOP_TEMP.matcher(n).matches());
         }
+    }
+
+    /**
+     * The forest plot of one pair of drivers' per-fault odds ratios, as in
+     * {@code fig-faults-odds-ratios-01-coverage-filter-vs-random.png}: pairs are numbered from 1, the primary
+     * question's pair first, so that name order is the order of the pairs (see {@code StatsFigures}).
+     */
+    public static String forestPlot(int number, String driverA, String driverB) {
+        return String.format(Locale.ROOT, "%s-%02d-%s-vs-%s.png", FOREST_PLOT, number, fileSafe(driverA), fileSafe(driverB));
+    }
+
+    /** Whether a file of the folder is a forest plot, of this naming or of the single one older versions drew. */
+    static boolean isForestPlot(String fileName) {
+        return fileName.startsWith(FOREST_PLOT) && fileName.endsWith(".png");
+    }
+
+    /** A driver's name as part of a file name: presets name drivers in letters and hyphens, anything else becomes _. */
+    private static String fileSafe(String name) {
+        return name.replaceAll("[^A-Za-z0-9._-]", "_");
     }
 
     public static Path situation(Path folder, String name) {

@@ -4,24 +4,33 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
 import java.awt.Graphics2D;
-import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.Set;
+import java.util.function.DoubleUnaryOperator;
+import java.util.stream.Stream;
 import sitcov.experiment.Comparison;
 import sitcov.experiment.Discovery;
 import sitcov.experiment.FaultTest;
+import sitcov.experiment.Finding;
 import sitcov.experiment.Measure;
 import sitcov.experiment.ReplicationResult;
 import sitcov.experiment.Summary;
 import sitcov.stats.Descriptive;
 
 /**
- * The figures of the statistics: per-fault odds ratios of the pooled maps with their CIs (a forest
- * plot of the primary question's pair of drivers, descriptive; bold where the replication-level test shows a difference), each measure's replications by driver (strip plots with the median), and distinct
- * faults found against ticks (median and quartile band over replications).
+ * The figures of the statistics: per pair of drivers, each fault's odds ratio of the pooled maps with
+ * its CI (a forest plot, descriptive; bold where the replication-level test shows a difference), each
+ * measure's replications by driver (strip plots with the median), and distinct faults found against
+ * ticks (median and quartile band over replications).
  */
 final class StatsFigures {
     private static final Strip[] STRIPS = {
@@ -29,29 +38,60 @@ final class StatsFigures {
         new Strip(Measure.FAULTS_FOUND, "distinct faults found"),
         new Strip(Measure.AVG_MAP_FAULT, "faults found per map"),
         new Strip(Measure.DISCOVERY_AREA, "area under faults-vs-ticks")};
-    /** Points at which the discovery curves are read, from no ticks to the shortest horizon. */
-    private static final int CURVE_POINTS = 200;
     private static final double OR_MIN = 0.05;
     private static final double OR_MAX = 20;
+    /** Driver names under the strips are slanted by this much when they do not fit side by side. */
+    private static final double SLANT = Math.toRadians(35);
 
     private record Strip(Measure measure, String label) {
+    }
+
+    /** Two drivers compared, {@code a} earlier in the preset, as {@link Comparison} orders them. */
+    record Pair(String a, String b, boolean primary) {
     }
 
     private StatsFigures() {
     }
 
     static void writeAll(Summary summary, Comparison comparison, Path folder) throws IOException {
-        MapRenderer.writeAtomically(oddsRatios(summary, comparison), folder.resolve(ResultsFolder.FIG_FORESTPLOT));
+        List<Pair> pairs = pairs(summary, comparison);
+        Set<String> drawn = new HashSet<>();
+        for (int i = 0; i < pairs.size(); i++) {
+            String name = ResultsFolder.forestPlot(i + 1, pairs.get(i).a(), pairs.get(i).b());
+            MapRenderer.writeAtomically(oddsRatios(comparison, pairs.get(i)), folder.resolve(name));
+            drawn.add(name);
+        }
+        // a folder drawn before (by an older version, or before a re-report) keeps no stale forest plot
+        // for the report page to show beside the new ones
+        try (Stream<Path> files = Files.list(folder)) {
+            for (Path f : files.toList()) {
+                String name = f.getFileName().toString();
+                if (ResultsFolder.isForestPlot(name) && !drawn.contains(name)) {
+                    Files.deleteIfExists(f);
+                }
+            }
+        }
         MapRenderer.writeAtomically(measures(summary), folder.resolve(ResultsFolder.FIG_MEASURES));
         MapRenderer.writeAtomically(discovery(summary), folder.resolve(ResultsFolder.FIG_DISCOVERY));
     }
 
-    static BufferedImage oddsRatios(Summary summary, Comparison comparison) {
-        // the primary question's pair (the first two drivers unless the preset names another)
-        List<String> pair = comparison.plan().hasPrimary() ? comparison.plan().primaryDrivers()
-                : summary.drivers().subList(0, Math.min(2, summary.drivers().size()));
+    /** Every pair of drivers, the primary question's first, then the rest in the preset's order. */
+    static List<Pair> pairs(Summary summary, Comparison comparison) {
+        List<String> primary = comparison.plan().hasPrimary() ? comparison.plan().primaryDrivers() : List.of();
+        List<String> drivers = summary.drivers();
+        List<Pair> pairs = new ArrayList<>();
+        for (int i = 0; i < drivers.size(); i++) {
+            for (int j = i + 1; j < drivers.size(); j++) {
+                boolean isPrimary = primary.contains(drivers.get(i)) && primary.contains(drivers.get(j));
+                pairs.add(isPrimary ? 0 : pairs.size(), new Pair(drivers.get(i), drivers.get(j), isPrimary));
+            }
+        }
+        return pairs;
+    }
+
+    static BufferedImage oddsRatios(Comparison comparison, Pair pair) {
         List<FaultTest> tests = comparison.faults().stream()
-                .filter(t -> pair.contains(t.driverA()) && pair.contains(t.driverB()))
+                .filter(t -> t.driverA().equals(pair.a()) && t.driverB().equals(pair.b()))
                 .toList();
         int rowHeight = 22;
         int top = 80;
@@ -59,10 +99,12 @@ final class StatsFigures {
         int width = 560;
         BufferedImage image = ExperimentFigures.canvas(1000, top + Math.max(1, tests.size()) * rowHeight + 90);
         Graphics2D g = ExperimentFigures.graphics(image);
-        String a = tests.isEmpty() ? "?" : tests.get(0).driverA();
-        String b = tests.isEmpty() ? "?" : tests.get(0).driverB();
-        ExperimentFigures.title(g, "Odds of a map finding each fault: " + a + " against " + b
+        ExperimentFigures.title(g, "Odds of a map finding each fault: " + pair.a() + " against " + pair.b()
                 + " (all maps pooled, 95 % CI, log scale)");
+        if (pair.primary()) {
+            g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+            g.drawString("the primary question's pair of drivers", 20, 50);
+        }
         double lo = Math.log(OR_MIN);
         double span = Math.log(OR_MAX) - lo;
         java.util.function.DoubleToIntFunction px = or -> left
@@ -76,7 +118,7 @@ final class StatsFigures {
             String s = Chart.number(tick);
             g.drawString(s, px.applyAsInt(tick) - g.getFontMetrics().stringWidth(s) / 2, bottom + 15);
         }
-        g.drawString("odds ratio (> 1: " + a + " finds it on more of its maps; ends beyond 0.05 or 20 are clipped)",
+        g.drawString("odds ratio (> 1: " + pair.a() + " finds it on more of its maps; ends beyond 0.05 or 20 are clipped)",
                 left, bottom + 32);
         for (int i = 0; i < tests.size(); i++) {
             FaultTest t = tests.get(i);
@@ -87,11 +129,12 @@ final class StatsFigures {
             g.drawString(String.format(Locale.ROOT, "fault %2d  %d/%d vs %d/%d", t.fault().id(), t.foundA(), t.mapsA(),
                     t.foundB(), t.mapsB()), 20, y + 4);
             g.drawString(t.finding().tested() ? "Holm p " + VerdictText.p(t.paired().pAdjusted())
-                    : t.finding() == sitcov.experiment.Finding.TOO_FEW ? "too few differ" : "not testable",
+                    : t.finding() == Finding.TOO_FEW ? "too few differ" : "not testable",
                     left + width + 20, y + 4);
-            if (Double.isNaN(t.oddsRatio())) {
+            Optional<String> noRatio = noRatio(t);
+            if (noRatio.isPresent()) {
                 g.setColor(Color.GRAY);
-                g.drawString(t.note(), px.applyAsInt(1) + 8, y + 4);
+                g.drawString(noRatio.get(), px.applyAsInt(1) + 8, y + 4);
                 continue;
             }
             g.setColor(differs ? Chart.COVERAGE : Color.GRAY);
@@ -107,13 +150,39 @@ final class StatsFigures {
         return image;
     }
 
+    /**
+     * What a fault's row says instead of an odds ratio, if it has none: found by neither driver, or on
+     * every map by both (a ratio of nothing against nothing says nothing).
+     */
+    static Optional<String> noRatio(FaultTest t) {
+        return Double.isNaN(t.oddsRatio()) ? Optional.of(Objects.requireNonNullElse(t.note(), "no odds ratio"))
+                : Optional.empty();
+    }
+
+    /** The axis of one measure's strip: counts label whole numbers, faults found end at the experiment's faults. */
+    static Axis axis(Measure measure, double max, int faults) {
+        Axis axis = switch (measure) {
+            case FAULTS_FOUND -> Axis.toCount(faults);
+            case CELLS_COVERED, MAPS_RUN -> Axis.counts(max);
+            default -> Axis.upTo(max);
+        };
+        return axis.padded();
+    }
+
     static BufferedImage measures(Summary summary) {
         List<String> drivers = summary.drivers();
-        BufferedImage image = ExperimentFigures.canvas(1000, 440);
+        int panel = 230;
+        int plotWidth = panel - 60;
+        java.awt.FontMetrics metrics = ExperimentFigures.graphics(ExperimentFigures.canvas(1, 1))
+                .getFontMetrics(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
+        int widest = drivers.stream().mapToInt(metrics::stringWidth).max().orElse(0);
+        // names wider than a driver's strip are slanted, so that none runs into the next
+        boolean slant = widest + 6 > plotWidth / Math.max(1, drivers.size());
+        int below = slant ? (int) Math.ceil(widest * Math.sin(SLANT)) + 10 : 0;
+        BufferedImage image = ExperimentFigures.canvas(1000, 440 + below);
         Graphics2D g = ExperimentFigures.graphics(image);
         ExperimentFigures.title(g, "Each replication's measures by driver (" + summary.results().size()
                 + " replications; bar = median)");
-        int panel = 230;
         for (int m = 0; m < STRIPS.length; m++) {
             double[][] values = new double[drivers.size()][];
             double max = 0;
@@ -123,17 +192,23 @@ final class StatsFigures {
                     max = Math.max(max, v);
                 }
             }
-            Chart chart = new Chart(g, 70 + m * (panel + 12), 80, panel - 60, 260, drivers.size(), Chart.nice(max), 0);
+            Chart chart = new Chart(g, 70 + m * (panel + 12), 80, plotWidth, 260,
+                    new Axis(List.of(0.0), drivers.size()), axis(STRIPS[m].measure(), max, summary.faults().size()));
             chart.axes(STRIPS[m].label(), "", "");
             g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
-            // names wider than a driver's strip take two rows, every other one lower, so none runs into the next
-            int slot = chart.px(1) - chart.px(0);
-            boolean stagger = drivers.stream().anyMatch(n -> g.getFontMetrics().stringWidth(n) + 4 > slot);
             for (int d = 0; d < drivers.size(); d++) {
                 String name = drivers.get(d);
                 g.setColor(Color.DARK_GRAY);
-                g.drawString(name, chart.px(d + 0.5) - g.getFontMetrics().stringWidth(name) / 2,
-                        chart.py(0) + 15 + (stagger && d % 2 == 1 ? 12 : 0));
+                if (slant) {
+                    // the name ends under its strip and runs down to the left
+                    Graphics2D r = (Graphics2D) g.create();
+                    r.translate(chart.px(d + 0.5) + 4, chart.py(0) + 12);
+                    r.rotate(-SLANT);
+                    r.drawString(name, -g.getFontMetrics().stringWidth(name), 0);
+                    r.dispose();
+                } else {
+                    g.drawString(name, chart.px(d + 0.5) - g.getFontMetrics().stringWidth(name) / 2, chart.py(0) + 15);
+                }
             }
             for (int d = 0; d < drivers.size(); d++) {
                 g.setColor(Chart.driver(d));
@@ -151,56 +226,54 @@ final class StatsFigures {
                 }
             }
         }
-        Chart.legendRow(g, 70, 400, drivers.toArray(String[]::new), Chart.drivers(drivers.size()));
+        Chart.legendRow(g, 70, image.getHeight() - 40, drivers.toArray(String[]::new), Chart.drivers(drivers.size()));
         g.dispose();
         return image;
     }
 
-    static BufferedImage discovery(Summary summary) {
-        List<String> drivers = summary.drivers();
-        BufferedImage image = ExperimentFigures.canvas(760, 440);
-        Graphics2D g = ExperimentFigures.graphics(image);
+    /** The ticks every replication of every driver spent at least: where the discovery curves are all still running. */
+    static long horizon(Summary summary) {
         long horizon = Long.MAX_VALUE;
         for (ReplicationResult r : summary.results()) {
             horizon = Math.min(horizon, r.drivers().stream().mapToLong(d -> d.spend().ticks()).min().orElse(0));
         }
-        horizon = summary.results().isEmpty() ? 1 : Math.max(1, horizon);
+        return summary.results().isEmpty() ? 1 : Math.max(1, horizon);
+    }
+
+    /** The ticks at which a replication's curve of faults found steps up. */
+    private static double[] firstFinds(Discovery run) {
+        return java.util.stream.IntStream.range(0, run.faults().size()).mapToLong(run::ticksAtFirst)
+                .filter(t -> t != Discovery.NEVER).mapToDouble(t -> t).toArray();
+    }
+
+    static BufferedImage discovery(Summary summary) {
+        List<String> drivers = summary.drivers();
+        long horizon = horizon(summary);
+        List<Band> bands = new ArrayList<>();
+        for (String driver : drivers) {
+            List<Discovery> found = summary.results().stream().map(r -> Discovery.of(r.of(driver), summary.faults()))
+                    .toList();
+            double[] xs = Band.breaks(horizon, found.stream().map(StatsFigures::firstFinds).toList());
+            bands.add(Band.of(xs, found.stream().<DoubleUnaryOperator>map(run -> t -> run.foundBy((long) t))
+                    .toList(), horizon));
+        }
+        List<String> notes = new ArrayList<>(List.of("line: median (the drivers' " + Chart.number(Chart.MEDIAN_SPACING)
+                + " px apart); shaded: between the quartiles; a map counts once judged whole"));
+        String same = Band.sameMedians(drivers, bands);
+        if (!same.isEmpty()) {
+            notes.add(same);
+        }
+        BufferedImage image = ExperimentFigures.canvas(760, 424 + 16 * notes.size());
+        Graphics2D g = ExperimentFigures.graphics(image);
         ExperimentFigures.title(g, "Distinct faults found against simulated ticks (median and quartiles over "
                 + summary.results().size() + " replications)");
-        Chart chart = new Chart(g, 80, 80, 560, 260, horizon, summary.faults().size());
+        Chart chart = new Chart(g, 80, 80, 560, 260, Axis.counts(horizon),
+                Axis.toCount(summary.faults().size()).padded());
         chart.axes("", "ticks spent (fault-free and faulty runs), to the least any replication spent",
                 "faults found (of " + summary.faults().size() + ")");
-        for (int d = 0; d < drivers.size(); d++) {
-            double[] xs = new double[CURVE_POINTS + 1];
-            double[][] band = new double[3][CURVE_POINTS + 1];
-            String driver = drivers.get(d);
-            List<Discovery> runs = summary.results().stream().map(r -> Discovery.of(r.of(driver), summary.faults()))
-                    .toList();
-            for (int i = 0; i <= CURVE_POINTS; i++) {
-                long t = horizon * i / CURVE_POINTS;
-                xs[i] = t;
-                double[] found = runs.stream().mapToDouble(run -> run.foundBy(t)).toArray();
-                Descriptive.Quartiles q = Descriptive.quartiles(found);
-                band[0][i] = q.lower();
-                band[1][i] = q.median();
-                band[2][i] = q.upper();
-            }
-            Color c = Chart.driver(d);
-            Path2D.Double area = new Path2D.Double();
-            area.moveTo(chart.px(xs[0]), chart.py(band[2][0]));
-            for (int i = 1; i < xs.length; i++) {
-                area.lineTo(chart.px(xs[i]), chart.py(band[2][i]));
-            }
-            for (int i = xs.length - 1; i >= 0; i--) {
-                area.lineTo(chart.px(xs[i]), chart.py(band[0][i]));
-            }
-            area.closePath();
-            g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 60));
-            g.fill(area);
-            chart.line(xs, band[1], c, 2.5f);
-        }
+        chart.bands(bands, Chart.drivers(drivers.size()));
         Chart.legendRow(g, 80, 400, drivers.toArray(String[]::new), Chart.drivers(drivers.size()));
-        ExperimentFigures.note(g, "line: median; shaded: between the quartiles; a map counts once it was judged whole");
+        ExperimentFigures.notes(g, notes);
         g.dispose();
         return image;
     }

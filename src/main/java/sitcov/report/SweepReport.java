@@ -52,7 +52,7 @@ final class SweepReport {
             for (double v : y) {
                 maxY = Math.max(maxY, v);
             }
-            Chart chart = new Chart(g, 80 + panel * 480, 80, 380, 260, maxX, Math.max(1, maxY));
+            Chart chart = new Chart(g, 80 + panel * 480, 80, 380, 260, Axis.counts(maxX).padded(), Axis.upTo(Math.max(1, maxY)).padded());
             chart.axes(paper ? "paper's notion (any accident)" : "differential oracle (new accident)",
                     "cells covered (of " + config.grid().cells() + ")", "avg-map-fault");
             double[] fit = Sweep.regression(x, y);

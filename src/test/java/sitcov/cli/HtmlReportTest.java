@@ -27,7 +27,7 @@ class HtmlReportTest {
         while (m.find()) {
             targets.add(m.group(1));
         }
-        assertTrue(targets.contains(ResultsFolder.FIG_FORESTPLOT) && targets.contains(ResultsFolder.STATS), targets.toString());
+        assertTrue(targets.contains(ResultsFolder.forestPlot(1, "coverage-filter", "random")) && targets.contains(ResultsFolder.STATS), targets.toString());
         for (String t : targets) {
             assertFalse(t.startsWith("http") || t.startsWith("//") || t.startsWith("/"), "nothing fetched from outside: " + t);
             assertTrue(Files.isRegularFile(folder.resolve(t)), "the report names " + t + ", which the folder lacks");

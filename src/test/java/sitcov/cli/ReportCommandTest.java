@@ -92,13 +92,15 @@ class ReportCommandTest {
         ResultsFolders.copy(ResultsFolders.tinyReference(), copy);
         Path stale = copy.resolve(".summary.csv4711.tmp");
         Path picture = copy.resolve("replays").resolve(".fault-14.png42.tmp");
+        Path forest = copy.resolve("." + ResultsFolder.forestPlot(1, "coverage-filter", "random") + "77.tmp");
         Path mine = copy.resolve(".notes.tmp");
-        for (Path p : List.of(stale, picture, mine)) {
+        for (Path p : List.of(stale, picture, forest, mine)) {
             Files.writeString(p, "half");
         }
         CliRunner r = CliRunner.run("report", copy.toString());
         assertEquals(0, r.exitCode(), r.err());
-        assertFalse(Files.exists(stale) || Files.exists(picture), "sitcov's own temporary files are swept");
+        assertFalse(Files.exists(stale) || Files.exists(picture) || Files.exists(forest),
+                "sitcov's own temporary files are swept");
         assertEquals("half", Files.readString(mine), "a file sitcov does not name is kept");
         Files.delete(mine);
         ResultsFolders.assertSameResults(ResultsFolders.tinyReference(), copy);

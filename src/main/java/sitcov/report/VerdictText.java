@@ -76,12 +76,11 @@ final class VerdictText {
         if (measures + faults == 0 || Comparison.tooFewReplications(c.replications())) {
             return Optional.empty();
         }
-        return Optional.of(String.format(Locale.ROOT, "Not enough replications for the exploratory family: at %d paired replications"
-                + " the smallest p a signed-rank test can give (%s) is above the Holm level to which %d of the exploratory"
-                + " tests below were held (%d of measures, %d per fault), so their \"inconclusive\" says only that no"
-                + " difference, however large, could have been shown there. Run more replications (--replications N; 30 is"
-                + " the usual minimum).", c.replications(), p(2 / Math.pow(2, c.replications())), measures + faults,
-                measures, faults));
+        return Optional.of(String.format(Locale.ROOT, "%d of the exploratory tests below (%d of measures, %d per fault)"
+                + " could not have shown a difference, however large: so few of their replications differ that the"
+                + " smallest p their signed-rank test can give is above the Holm level they were held to, and their"
+                + " \"inconclusive\" says only that. More replications would tell more (--replications N).",
+                measures + faults, measures, faults));
     }
 
     private static String question(AnalysisPlan plan, BudgetKind budget) {

@@ -40,8 +40,7 @@ public final class ReplayAnimation {
     /** Writes the GIF; {@code labels} name the two sides. */
     public static void write(WorldMap map, List<FrameRecorder.Frame> left, List<FrameRecorder.Frame> right,
                              String[] labels, Path file) throws IOException {
-        WorldMap empty = new WorldMap(map.layout(), List.of(), map.movingCarsRequested(), map.movingCarOmissions());
-        BufferedImage base = new MapRenderer(SCALE).render(empty);
+        BufferedImage base = new MapRenderer(SCALE).renderWithoutTraffic(map);
         int frames = Math.max(left.size(), right.size());
         Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
         ImageWriter writer = ImageIO.getImageWritersByFormatName("gif").next();

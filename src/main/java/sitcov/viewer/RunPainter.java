@@ -19,7 +19,6 @@ import sitcov.report.MapRenderer;
 import sitcov.report.MapShapes;
 import sitcov.vehicles.AutonomousCar;
 import sitcov.vehicles.Vehicle;
-import sitcov.world.WorldMap;
 
 /**
  * Paints one live run as it stands: the map (drawn once), the car's sensors (the camera's 90° fan to
@@ -47,9 +46,7 @@ public final class RunPainter {
         this.run = run;
         this.title = title;
         this.scale = pixelsPerMetre;
-        WorldMap map = run.map();
-        this.base = new MapRenderer(pixelsPerMetre).render(new WorldMap(map.layout(), List.of(),
-                map.movingCarsRequested(), map.movingCarOmissions()));
+        this.base = new MapRenderer(pixelsPerMetre).renderWithoutTraffic(run.map());
     }
 
     public LiveRun run() {

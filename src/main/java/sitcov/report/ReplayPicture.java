@@ -22,8 +22,8 @@ public final class ReplayPicture {
     }
 
     private static final int TITLE = 64;
-    private static final Color EFFECT = new Color(0xFF8C00);
-    private static final Color NEW_ACCIDENT = new Color(0xD7263D);
+    static final Color EFFECT = new Color(0xFF8C00);
+    static final Color NEW_ACCIDENT = new Color(0xD7263D);
 
     private final int scale;
 

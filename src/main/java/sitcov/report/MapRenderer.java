@@ -137,7 +137,7 @@ public final class MapRenderer {
     }
 
     /** Height of the world area in pixels at a scale: where the caption strip starts. */
-    static int worldHeightPixels(int pixelsPerMetre) {
+    public static int worldHeightPixels(int pixelsPerMetre) {
         return (int) Math.round(Dimensions.WORLD_HEIGHT * pixelsPerMetre);
     }
 

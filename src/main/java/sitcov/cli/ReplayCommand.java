@@ -16,7 +16,9 @@ import sitcov.experiment.RunSummary;
 import sitcov.experiment.Simulator;
 import sitcov.faults.Fault;
 import sitcov.experiment.RunObserver;
+import sitcov.oracle.RunResult;
 import sitcov.report.FrameRecorder;
+import sitcov.report.OutcomeText;
 import sitcov.report.ReplayAnimation;
 import sitcov.report.ReplayPicture;
 import sitcov.report.ResultsRows;
@@ -75,9 +77,9 @@ final class ReplayCommand implements Command {
                         + ". Was the folder written by another version of sitcov? (see its manifest)");
                 return ExitCode.FAILURE;
             }
-            out.println("Row " + c.row().get().number() + " replays exactly: " + judged.faultFree().outcome()
-                    + c.fault().map(f -> "; fault " + f.id() + ": " + judged.verdicts().get(0).detection()).orElse(""));
+            out.println("Row " + c.row().get().number() + " replays exactly as runs.csv recorded it.");
         }
+        outcomes(c, judged, out);
         try {
             draw(c, judged, png, gif);
         } catch (IOException e) {
@@ -87,6 +89,22 @@ final class ReplayCommand implements Command {
         out.println("Replay drawn to " + png + (c.fault().isPresent() ? " (left without the fault, right with it)" : ""));
         gif.ifPresent(g -> out.println("Animated in " + g));
         return ExitCode.OK;
+    }
+
+    /** How each run ended: the faulty run first, with its verdict, then its twin, each named as such. */
+    private static void outcomes(Case c, JudgedMap judged, PrintStream out) {
+        RunResult free = judged.faultFree();
+        String twin = OutcomeText.of(free.outcome(), free.ticks(), free.accidents());
+        if (c.fault().isEmpty()) {
+            out.println("The fault-free run: " + twin);
+            return;
+        }
+        FaultVerdict verdict = judged.verdicts().get(0);
+        RunResult faulty = verdict.faultyRun();
+        Fault fault = c.fault().get();
+        out.println("With fault " + fault.id() + " (" + fault.label() + "): "
+                + OutcomeText.of(faulty.outcome(), faulty.ticks(), faulty.accidents()) + ". Verdict: " + ReplayPicture.verdictLine(verdict, c.length()));
+        out.println("Without the fault (its twin, same map and internal seed): " + twin);
     }
 
     private static void draw(Case c, JudgedMap judged, Path png, Optional<Path> gif) throws IOException {

@@ -12,8 +12,12 @@ import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.experiment.Simulator;
+import sitcov.oracle.Outcome;
+import sitcov.oracle.RunResult;
 import sitcov.report.GifFile;
 import sitcov.report.ResultsFolder;
+import sitcov.world.MapGenerator;
 
 class ReplayCommandTest {
     /** The number (1 = first under the header) of the first row of the tiny reference run whose fault was FOUND. */
@@ -34,7 +38,19 @@ class ReplayCommandTest {
         CliRunner r = CliRunner.run("replay", ResultsFolders.tinyReference().toString(), "--row",
                 Integer.toString(firstFoundRow()), "--png", png.toString(), "--gif", gif.toString());
         assertEquals(0, r.exitCode(), r.err());
-        assertTrue(r.out().contains("replays exactly") && r.out().contains(": FOUND"), r.out());
+        assertTrue(r.out().contains("replays exactly") && r.out().contains("Verdict: FOUND"), r.out());
+        // the faulty run's own outcome, as the row records it (outcome and ticks columns), not its twin's
+        String[] cells = Files.readAllLines(ResultsFolders.tinyReference().resolve(ResultsFolder.RUNS))
+                .get(firstFoundRow()).split(",", -1);
+        long lastTick = Long.parseLong(cells[13]) - 1;
+        String outcome = switch (cells[12]) {
+            case "TARGET_REACHED" -> "Reached the Target at t=" + lastTick;
+            case "TIMEOUT" -> "TIMEOUT at t=" + lastTick;
+            default -> "Stopped at t=" + lastTick;
+        };
+        assertTrue(r.out().contains("With fault " + cells[11] + " (") && line(r.out(), "With fault").contains(outcome),
+                r.out());
+        assertTrue(r.out().contains("Without the fault (its twin"), r.out());
         BufferedImage image = ImageIO.read(png.toFile());
         assertTrue(image.getWidth() > 2 * image.getHeight(), "two maps side by side: " + image.getWidth() + "x" + image.getHeight());
         GifFile animation = GifFile.read(gif, 0, -1);
@@ -79,6 +95,12 @@ class ReplayCommandTest {
         CliRunner r = CliRunner.run("replay", "--seed", "1", "--fault", "17", "--png", png.toString());
         assertEquals(0, r.exitCode(), r.err());
         assertTrue(Files.size(png) > 0);
+        // seed 1 reaches its Target without faults; fault 17 leaves the car standing until its time is up
+        RunResult twin = Simulator.run(MapGenerator.generate(1), 1);
+        assertEquals(Outcome.TARGET_REACHED, twin.outcome());
+        assertTrue(line(r.out(), "Without the fault").endsWith("Reached the Target at t=" + (twin.ticks() - 1)), r.out());
+        assertTrue(line(r.out(), "With fault 17").contains("TIMEOUT at t=4999"), r.out());
+        assertTrue(line(r.out(), "With fault 17").contains("Verdict: FOUND by TIMEOUT"), r.out());
     }
 
     @Test
@@ -89,5 +111,10 @@ class ReplayCommandTest {
         CliRunner fault = CliRunner.run("replay", "--seed", "1");
         assertEquals(ExitCode.USAGE, fault.exitCode());
         assertTrue(fault.err().contains("--fault names one fault"), fault.err());
+    }
+
+    /** The line of {@code out} that starts with {@code start}. */
+    private static String line(String out, String start) {
+        return out.lines().filter(l -> l.startsWith(start)).findFirst().orElse("");
     }
 }

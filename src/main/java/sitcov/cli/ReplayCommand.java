@@ -67,7 +67,7 @@ final class ReplayCommand implements Command {
         Case c = options.positional().isEmpty() ? fromSeeds(options) : fromFolder(options);
         String name = "replay-" + c.map().seed() + "-" + c.internalSeed() + c.fault().map(f -> "-fault-" + f.id()).orElse("")
                 + ".png";
-        Path png = options.outputFile("--png").orElse(Path.of(name));
+        Path png = options.outputFile("--png", Path.of(name));
         Optional<Path> gif = options.outputFile("--gif");
         JudgedMap judged = MapRunner.judge(c.map(), c.internalSeed(), c.fault().stream().toList(), c.length());
         if (c.row().isPresent()) {

@@ -113,6 +113,21 @@ class ReplayCommandTest {
         assertTrue(fault.err().contains("--fault names one fault"), fault.err());
     }
 
+    @Test
+    void thePictureAndTheAnimationMayNotBeOneFileHoweverTheyAreSpelt(@TempDir Path dir) throws Exception {
+        CliRunner same = CliRunner.run("replay", "--seed", "1", "--fault", "17", "--png", dir.resolve("f").toString(),
+                "--gif", dir.resolve("f").toString());
+        assertEquals(ExitCode.USAGE, same.exitCode());
+        assertTrue(same.err().contains("--png and --gif both name"), same.err());
+        Path link = Files.createSymbolicLink(dir.resolve("link.gif"), dir.resolve("replay.png"));
+        CliRunner linked = CliRunner.run("replay", "--seed", "1", "--fault", "17", "--png", dir.resolve("replay.png").toString(),
+                "--gif", link.toString());
+        assertEquals(ExitCode.USAGE, linked.exitCode());
+        assertTrue(linked.err().contains("--png " + dir.resolve("replay.png") + " and --gif " + link + " are the same file"),
+                linked.err());
+        assertFalse(Files.exists(dir.resolve("f")) || Files.exists(dir.resolve("replay.png")), "nothing written");
+    }
+
     /** The line of {@code out} that starts with {@code start}. */
     private static String line(String out, String start) {
         return out.lines().filter(l -> l.startsWith(start)).findFirst().orElse("");

@@ -54,8 +54,8 @@ public final class ReplayAnimation {
 
     /** Pixels per metre: two maps side by side fit a laptop screen. */
     static final int SCALE = 3;
-    /** Hundredths of a second a frame is shown: a frame a simulated second plays ten times as fast. */
-    static final int DELAY = 10;
+    /** Hundredths of a second a frame is shown: a frame a simulated second plays 12.5 times as fast. */
+    static final int DELAY = 8;
     /** A frame after a skip stays longer, so the jump is seen; the last frame longer still before the loop. */
     static final int SKIP_DELAY = 120;
     static final int LAST_DELAY = 300;

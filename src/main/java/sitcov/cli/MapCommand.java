@@ -48,10 +48,6 @@ final class MapCommand implements Command {
         }
         Optional<Path> png = options.outputFile("--png");
         Optional<Path> save = options.outputFile("--save");
-        if (png.isPresent() && save.isPresent() && png.get().toAbsolutePath().normalize()
-                .equals(save.get().toAbsolutePath().normalize())) {
-            throw new UsageException("map: --png and --save both name " + png.get() + "; give each its own file.");
-        }
 
         WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.load(name(), load.get());
         out.println(MapDescription.of(map));

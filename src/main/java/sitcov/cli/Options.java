@@ -12,6 +12,7 @@ import java.util.Optional;
 import java.util.Set;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
+import sitcov.report.OutputFile;
 
 /**
  * The options of one command: {@code --name value} (or {@code --name=value}) for valued options,
@@ -26,6 +27,9 @@ final class Options {
     private final Map<String, String> values = new LinkedHashMap<>();
     private final Set<String> flags = new LinkedHashSet<>();
     private final List<String> positional = new ArrayList<>();
+    /** The files asked for so far, by option: none may be written twice, nor written over while read. */
+    private final Map<String, Path> outputs = new LinkedHashMap<>();
+    private final Map<String, Path> inputs = new LinkedHashMap<>();
 
     private Options(String command) {
         this.command = command;
@@ -162,29 +166,71 @@ final class Options {
                 throw new UsageException(command + ": cannot read " + name + " " + shown(p)
                         + (Files.exists(p) ? " (not a readable file)" : " (no such file)") + "; check the path.");
             }
+            for (Map.Entry<String, Path> output : outputs.entrySet()) {
+                if (OutputFile.sameFile(output.getValue(), p)) {
+                    throw new UsageException(command + ": " + name + " " + shown(p) + " and " + output.getKey() + " "
+                            + shown(output.getValue()) + " are the same file; write " + output.getKey()
+                            + " elsewhere, or it would replace what is read.");
+                }
+            }
+            inputs.put(name, p);
         }
         return path;
     }
 
-    /** A file to write: its folder must exist and be writable; the file itself may be replaced. */
+    /**
+     * A file to write: its folder must exist and be writable; the file itself may be replaced. It
+     * may not be the file of another output of the same command (see {@link OutputFile#sameFile}):
+     * each output is checked here, against those asked for before it, so every command with
+     * several outputs refuses a clash before it writes anything.
+     */
     Optional<Path> outputFile(String name) throws UsageException {
         Optional<Path> path = path(name);
         if (path.isPresent()) {
-            Path p = path.get().toAbsolutePath();
-            Path folder = p.getParent();
-            if (Files.isDirectory(p)) {
-                throw new UsageException(command + ": " + name + " " + shown(path.get()) + " is a folder; name a file in it.");
-            }
-            if (folder == null || !Files.isDirectory(folder)) {
-                throw new UsageException(command + ": the folder of " + name + " " + shown(path.get())
-                        + " does not exist; create it first.");
-            }
-            if (!Files.isWritable(folder)) {
-                throw new UsageException(command + ": cannot write into " + folder + " for " + name
-                        + "; choose a writable folder.");
-            }
+            checked(name, path.get());
         }
         return path;
+    }
+
+    /** {@link #outputFile(String)}, or {@code otherwise} when {@code name} is not given: a default output is checked too. */
+    Path outputFile(String name, Path otherwise) throws UsageException {
+        Optional<Path> path = outputFile(name);
+        if (path.isPresent()) {
+            return path.get();
+        }
+        checked(name + " (by default " + shown(otherwise) + ")", otherwise);
+        return otherwise;
+    }
+
+    private void checked(String name, Path file) throws UsageException {
+        Path p = file.toAbsolutePath();
+        Path folder = p.getParent();
+        if (Files.isDirectory(p)) {
+            throw new UsageException(command + ": " + name + " " + shown(file) + " is a folder; name a file in it.");
+        }
+        if (folder == null || !Files.isDirectory(folder)) {
+            throw new UsageException(command + ": the folder of " + name + " " + shown(file)
+                    + " does not exist; create it first.");
+        }
+        if (!Files.isWritable(folder)) {
+            throw new UsageException(command + ": cannot write into " + folder + " for " + name
+                    + "; choose a writable folder.");
+        }
+        clash(name, file, outputs, "give each its own file");
+        clash(name, file, inputs, "write " + name + " elsewhere, or it would replace what is read");
+        outputs.put(name, file);
+    }
+
+    /** Refuses {@code file} for option {@code name} if it is the file of one of {@code earlier}. */
+    private void clash(String name, Path file, Map<String, Path> earlier, String fix) throws UsageException {
+        for (Map.Entry<String, Path> e : earlier.entrySet()) {
+            if (OutputFile.sameFile(e.getValue(), file)) {
+                throw new UsageException(command + ": " + (e.getValue().equals(file)
+                        ? e.getKey() + " and " + name + " both name " + shown(file)
+                        : e.getKey() + " " + shown(e.getValue()) + " and " + name + " " + shown(file) + " are the same file")
+                        + "; " + fix + ".");
+            }
+        }
     }
 
     /** A path as messages show it: an empty one as '' rather than nothing. */

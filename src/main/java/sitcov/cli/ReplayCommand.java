@@ -16,7 +16,9 @@ import sitcov.experiment.RunSummary;
 import sitcov.experiment.Simulator;
 import sitcov.faults.Fault;
 import sitcov.experiment.RunObserver;
+import sitcov.oracle.RunResult;
 import sitcov.report.FrameRecorder;
+import sitcov.report.OutcomeText;
 import sitcov.report.ReplayAnimation;
 import sitcov.report.ReplayPicture;
 import sitcov.report.ResultsRows;
@@ -32,9 +34,8 @@ import sitcov.world.WorldMap;
  */
 final class ReplayCommand implements Command {
     private static final int PIXELS_PER_METRE = 6;
-    /** A frame each second of simulated time (5 ticks), and a GIF of at most 300 frames. */
+    /** A frame each second of simulated time (5 ticks); the animation skips what does not move. */
     private static final int FRAME_TICKS = 5;
-    private static final int MAX_FRAMES = 300;
 
     @Override
     public String name() {
@@ -66,7 +67,7 @@ final class ReplayCommand implements Command {
         Case c = options.positional().isEmpty() ? fromSeeds(options) : fromFolder(options);
         String name = "replay-" + c.map().seed() + "-" + c.internalSeed() + c.fault().map(f -> "-fault-" + f.id()).orElse("")
                 + ".png";
-        Path png = options.outputFile("--png").orElse(Path.of(name));
+        Path png = options.outputFile("--png", Path.of(name));
         Optional<Path> gif = options.outputFile("--gif");
         JudgedMap judged = MapRunner.judge(c.map(), c.internalSeed(), c.fault().stream().toList(), c.length());
         if (c.row().isPresent()) {
@@ -76,9 +77,9 @@ final class ReplayCommand implements Command {
                         + ". Was the folder written by another version of sitcov? (see its manifest)");
                 return ExitCode.FAILURE;
             }
-            out.println("Row " + c.row().get().number() + " replays exactly: " + judged.faultFree().outcome()
-                    + c.fault().map(f -> "; fault " + f.id() + ": " + judged.verdicts().get(0).detection()).orElse(""));
+            out.println("Row " + c.row().get().number() + " replays exactly as runs.csv recorded it.");
         }
+        outcomes(c, judged, out);
         try {
             draw(c, judged, png, gif);
         } catch (IOException e) {
@@ -90,17 +91,33 @@ final class ReplayCommand implements Command {
         return ExitCode.OK;
     }
 
+    /** How each run ended: the faulty run first, with its verdict, then its twin, each named as such. */
+    private static void outcomes(Case c, JudgedMap judged, PrintStream out) {
+        RunResult free = judged.faultFree();
+        String twin = OutcomeText.of(free.outcome(), free.ticks(), free.accidents());
+        if (c.fault().isEmpty()) {
+            out.println("The fault-free run: " + twin);
+            return;
+        }
+        FaultVerdict verdict = judged.verdicts().get(0);
+        RunResult faulty = verdict.faultyRun();
+        Fault fault = c.fault().get();
+        out.println("With fault " + fault.id() + " (" + fault.label() + "): "
+                + OutcomeText.of(faulty.outcome(), faulty.ticks(), faulty.accidents()) + ". Verdict: " + ReplayPicture.verdictLine(verdict, c.length()));
+        out.println("Without the fault (its twin, same map and internal seed): " + twin);
+    }
+
     private static void draw(Case c, JudgedMap judged, Path png, Optional<Path> gif) throws IOException {
         TrajectoryRecorder free = new TrajectoryRecorder();
         FrameRecorder freeFrames = new FrameRecorder(FRAME_TICKS);
         var faultFree = Simulator.run(c.map(), c.internalSeed(), Set.of(), both(free, freeFrames)).result();
+        var freeSide = new ReplayAnimation.Side(c.fault().isEmpty() ? "the fault-free run" : "without the fault", free,
+                freeFrames.frames(), faultFree, Optional.empty(), Optional.empty());
         if (c.fault().isEmpty()) {
             RunRenderer renderer = new RunRenderer(PIXELS_PER_METRE);
             renderer.writePng(renderer.render(c.map(), free, faultFree), png);
             if (gif.isPresent()) {
-                int step = step(freeFrames.frames().size());
-                ReplayAnimation.write(c.map(), fewer(freeFrames.frames(), step), fewer(freeFrames.frames(), step),
-                        new String[] {"without faults", "without faults"}, gif.get());
+                ReplayAnimation.write(c.map(), List.of(freeSide), gif.get());
             }
             return;
         }
@@ -110,15 +127,15 @@ final class ReplayCommand implements Command {
         var record = Simulator.run(c.map(), c.internalSeed(), Set.of(c.fault().get()), both(faulty, faultyFrames));
         FaultVerdict verdict = judged.verdicts().get(0);
         String line = ReplayPicture.verdictLine(verdict, c.length());
+        var activation = record.activations().get(c.fault().get().ordinal());
         Files.createDirectories(png.toAbsolutePath().getParent());
         new RunRenderer(PIXELS_PER_METRE).writePng(new ReplayPicture(PIXELS_PER_METRE).render(c.map(),
                 new ReplayPicture.Side(free, faultFree), new ReplayPicture.Side(faulty, record.result()),
-                record.activations().get(c.fault().get().ordinal()), line, verdict.newAccident()), png);
+                activation, line, verdict.newAccident()), png);
         if (gif.isPresent()) {
-            // one step for both sides, so their frames show the same ticks
-            int step = step(Math.max(freeFrames.frames().size(), faultyFrames.frames().size()));
-            ReplayAnimation.write(c.map(), fewer(freeFrames.frames(), step), fewer(faultyFrames.frames(), step),
-                    new String[] {"without the fault", "with fault " + c.fault().get().id()}, gif.get());
+            ReplayAnimation.write(c.map(), List.of(freeSide, new ReplayAnimation.Side("with fault " + c.fault().get().id(),
+                    faulty, faultyFrames.frames(), record.result(), Optional.of(activation), verdict.newAccident())),
+                    gif.get());
         }
     }
 
@@ -127,25 +144,6 @@ final class ReplayCommand implements Command {
             a.afterTick(tick, scene, detector);
             b.afterTick(tick, scene, detector);
         };
-    }
-
-    /** Every how many frames one is kept, for at most {@link #MAX_FRAMES}: a long run plays faster, never for minutes. */
-    private static int step(int frames) {
-        return Math.max(1, (frames + MAX_FRAMES - 1) / MAX_FRAMES);
-    }
-
-    private static List<FrameRecorder.Frame> fewer(List<FrameRecorder.Frame> frames, int step) {
-        if (step <= 1) {
-            return frames;
-        }
-        List<FrameRecorder.Frame> kept = new java.util.ArrayList<>();
-        for (int i = 0; i < frames.size(); i += step) {
-            kept.add(frames.get(i));
-        }
-        if (kept.get(kept.size() - 1) != frames.get(frames.size() - 1)) {
-            kept.add(frames.get(frames.size() - 1));
-        }
-        return kept;
     }
 
     private static Optional<String> differences(ResultsRows.Row row, JudgedMap judged) {

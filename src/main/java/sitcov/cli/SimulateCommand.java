@@ -77,10 +77,6 @@ final class SimulateCommand implements Command {
         Set<Fault> faults = options.faults("--faults").orElse(Set.of());
         Optional<Path> png = options.outputFile("--png");
         Optional<Path> trace = options.outputFile("--trace");
-        if (png.isPresent() && trace.isPresent() && png.get().toAbsolutePath().normalize()
-                .equals(trace.get().toAbsolutePath().normalize())) {
-            throw new UsageException("simulate: --png and --trace both name " + png.get() + "; give each its own file.");
-        }
 
         WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.loadRunnable(name(), load.get());
         long internalSeed = internal.orElse(map.seed());

@@ -11,6 +11,7 @@ import javax.swing.SwingUtilities;
 import sitcov.experiment.LiveRun;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
+import sitcov.report.MapRenderer;
 import sitcov.viewer.RunPainter;
 import sitcov.viewer.ViewerWindow;
 import sitcov.world.MapGenerator;
@@ -18,8 +19,6 @@ import sitcov.world.WorldMap;
 
 /** {@code view}: a run in a window as it happens, beside its fault-free twin when faults are given. */
 final class ViewCommand implements Command {
-    private static final int PIXELS_PER_METRE = 4;
-
     @Override
     public String name() {
         return "view";
@@ -51,14 +50,17 @@ final class ViewCommand implements Command {
             throw new UsageException("view: there is no display here; run it on a desktop, or under a virtual one"
                     + " (xvfb-run sitcov view ...), or draw the run with 'replay --seed S --fault F --gif FILE'.");
         }
+        int panes = faults.isEmpty() ? 1 : 2;
+        int scale = ViewerWindow.scaleFor(ViewerWindow.usableScreen().getSize(), panes, MapRenderer.DEFAULT_SCALE);
+        String twin = faults.size() == 1 ? "without the fault" : "without the faults";
         SwingUtilities.invokeLater(() -> new ViewerWindow(() -> {
             List<RunPainter> painters = new ArrayList<>();
             if (!faults.isEmpty()) {
-                painters.add(new RunPainter(new LiveRun(map, internal, Set.of()), "without faults", PIXELS_PER_METRE));
+                painters.add(new RunPainter(new LiveRun(map, internal, Set.of()), twin, scale));
             }
             painters.add(new RunPainter(new LiveRun(map, internal, faults), faults.isEmpty() ? "seed " + map.seed()
                     : "with " + (faults.size() == 1 ? "fault " + faults.iterator().next().id() + " ("
-                            + faults.iterator().next().label() + ")" : "faults " + FaultSet.format(faults)), PIXELS_PER_METRE));
+                            + faults.iterator().next().label() + ")" : "faults " + FaultSet.format(faults)), scale));
             return painters;
         }).show());
         out.println("view: a window shows map " + map.seed() + " (internal seed " + internal + "); close it to end.");

@@ -12,15 +12,21 @@ import java.util.List;
 
 /**
  * Puts short text labels next to the things they name, in pixel coordinates, on a white tag so
- * they read on grass and asphalt alike. Each label takes the first of eight spots around its anchor
- * that stays inside the picture and clear of earlier labels and reserved areas (the markers
- * themselves); if none is clear, the spot that overlaps least.
+ * they read on grass and asphalt alike. Each label takes the first spot around its anchor that
+ * stays inside the picture and clear of earlier labels and reserved areas (the markers
+ * themselves): eight spots round the anchor, then the same eight further out, ring by ring, with a
+ * leader line back to the anchor. Where nothing is clear, it still keeps off other labels if any
+ * spot does, covering a marker rather than a label's text.
  */
 final class LabelPlacer {
     private final Graphics2D g;
     private final MapStyle style;
     private final Rectangle2D bounds;
-    private final List<Rectangle2D> taken = new ArrayList<>();
+    /** Rings of spots tried round an anchor, each a label's height further out than the last. */
+    private static final int RINGS = 12;
+
+    private final List<Rectangle2D> reserved = new ArrayList<>();
+    private final List<Rectangle2D> labels = new ArrayList<>();
 
     LabelPlacer(Graphics2D g, MapStyle style, Rectangle2D bounds) {
         this.g = g;
@@ -30,7 +36,12 @@ final class LabelPlacer {
 
     /** Keeps labels off an area, a marker say. */
     void reserve(Rectangle2D area) {
-        taken.add(area);
+        reserved.add(area);
+    }
+
+    /** The tags placed so far, in pixels. */
+    List<Rectangle2D> placed() {
+        return List.copyOf(labels);
     }
 
     /**
@@ -45,26 +56,8 @@ final class LabelPlacer {
         double bar = Math.max(3, fm.getHeight() / 4.0);
         double w = fm.stringWidth(text) + 2 * pad + bar;
         double h = fm.getAscent() + fm.getDescent() + pad;
-        Rectangle2D best = null;
-        double bestScore = Double.MAX_VALUE;
-        double d = clearance;
-        double[][] spots = {
-            {d, -d - h}, {d, d}, {-d - w, -d - h}, {-d - w, d},
-            {-w / 2, -d - h - clearance}, {-w / 2, d + clearance}, {d + clearance, -h / 2}, {-d - w - clearance, -h / 2},
-        };
-        for (double[] spot : spots) {
-            Rectangle2D r = new Rectangle2D.Double(x + spot[0], y + spot[1], w, h);
-            double score = overlap(r) + outside(r) * 4;
-            if (score < bestScore) {
-                bestScore = score;
-                best = r;
-            }
-            if (score == 0) {
-                break;
-            }
-        }
-        Rectangle2D r = clamp(best);
-        taken.add(r);
+        Rectangle2D r = spot(x, y, clearance, w, h);
+        labels.add(r);
 
         double nx = nearestX(r, x);
         double ny = nearestY(r, y);
@@ -87,9 +80,44 @@ final class LabelPlacer {
         g.drawString(text, (float) (r.getX() + bar + pad), (float) (r.getY() + pad / 2 + fm.getAscent()));
     }
 
-    private double overlap(Rectangle2D r) {
+    /**
+     * The first spot of the rings round ({@code x}, {@code y}) that is inside the picture and clear
+     * of everything; failing that, the one that overlaps labels least, then reserved areas least.
+     */
+    private Rectangle2D spot(double x, double y, double clearance, double w, double h) {
+        Rectangle2D best = null;
+        double bestLabels = Double.MAX_VALUE;
+        double bestReserved = Double.MAX_VALUE;
+        double step = Math.max(h, clearance);
+        for (int ring = 0; ring < RINGS; ring++) {
+            double d = clearance + ring * step;
+            double[][] spots = {
+                {d, -d - h}, {d, d}, {-d - w, -d - h}, {-d - w, d},
+                {-w / 2, -d - h - clearance}, {-w / 2, d + clearance}, {d + clearance, -h / 2}, {-d - w - clearance, -h / 2},
+            };
+            for (double[] offset : spots) {
+                Rectangle2D r = new Rectangle2D.Double(x + offset[0], y + offset[1], w, h);
+                if (!inside(r)) {
+                    r = clamp(r);
+                }
+                double onLabels = overlap(r, labels);
+                double onReserved = overlap(r, reserved);
+                if (onLabels == 0 && onReserved == 0) {
+                    return r;
+                }
+                if (onLabels < bestLabels || onLabels == bestLabels && onReserved < bestReserved) {
+                    best = r;
+                    bestLabels = onLabels;
+                    bestReserved = onReserved;
+                }
+            }
+        }
+        return best;
+    }
+
+    private static double overlap(Rectangle2D r, List<Rectangle2D> others) {
         double total = 0;
-        for (Rectangle2D t : taken) {
+        for (Rectangle2D t : others) {
             Rectangle2D i = r.createIntersection(t);
             if (i.getWidth() > 0 && i.getHeight() > 0) {
                 total += i.getWidth() * i.getHeight();
@@ -98,12 +126,12 @@ final class LabelPlacer {
         return total;
     }
 
-    private double outside(Rectangle2D r) {
-        Rectangle2D i = r.createIntersection(bounds);
-        double inside = Math.max(0, i.getWidth()) * Math.max(0, i.getHeight());
-        return r.getWidth() * r.getHeight() - inside;
+    private boolean inside(Rectangle2D r) {
+        return r.getMinX() >= bounds.getMinX() + 1 && r.getMaxX() <= bounds.getMaxX() - 1
+                && r.getMinY() >= bounds.getMinY() + 1 && r.getMaxY() <= bounds.getMaxY() - 1;
     }
 
+    /** Moves a spot that sticks out of the picture back inside it. */
     private Rectangle2D clamp(Rectangle2D r) {
         double x = Math.max(bounds.getMinX() + 1, Math.min(r.getX(), bounds.getMaxX() - r.getWidth() - 1));
         double y = Math.max(bounds.getMinY() + 1, Math.min(r.getY(), bounds.getMaxY() - r.getHeight() - 1));

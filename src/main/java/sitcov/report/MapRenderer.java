@@ -80,8 +80,20 @@ public final class MapRenderer {
         return render(map, Overlay.NONE);
     }
 
+    /**
+     * The map without its moving cars at their starts, for pictures that draw them where they are
+     * (an animation, the viewer); the caption still counts them, as {@link #render(WorldMap)}'s does.
+     */
+    public BufferedImage renderWithoutTraffic(WorldMap map) {
+        return render(map, Overlay.NONE, false);
+    }
+
     /** The map with {@code overlay} drawn over it (the caption is still the map's). */
     BufferedImage render(WorldMap map, Overlay overlay) {
+        return render(map, overlay, true);
+    }
+
+    private BufferedImage render(WorldMap map, Overlay overlay, boolean traffic) {
         Dimension size = imageSize(scale);
         int worldHeight = worldHeightPixels(scale);
         BufferedImage image = new BufferedImage(size.width, size.height, BufferedImage.TYPE_INT_RGB);
@@ -94,10 +106,10 @@ public final class MapRenderer {
             g.setClip(0, 0, size.width, worldHeight);
             AffineTransform pixels = g.getTransform();
             g.scale(scale, scale);
-            drawWorld(g, map);
+            drawWorld(g, map, traffic);
             overlay.drawInWorld(g);
             g.setTransform(pixels);
-            LabelPlacer labels = drawLabels(g, map, new Rectangle2D.Double(0, 0, size.width, worldHeight));
+            LabelPlacer labels = drawLabels(g, map, traffic, new Rectangle2D.Double(0, 0, size.width, worldHeight));
             overlay.drawLabelled(g, labels);
             g.setClip(null);
             g.setColor(MapStyle.FRAME);
@@ -134,7 +146,7 @@ public final class MapRenderer {
     }
 
     /** Height of the world area in pixels at a scale: where the caption strip starts. */
-    static int worldHeightPixels(int pixelsPerMetre) {
+    public static int worldHeightPixels(int pixelsPerMetre) {
         return (int) Math.round(Dimensions.WORLD_HEIGHT * pixelsPerMetre);
     }
 
@@ -143,6 +155,10 @@ public final class MapRenderer {
      * metres at this renderer's scale; lets other pictures draw a map and their own things on it.
      */
     void drawWorld(Graphics2D g, WorldMap map) {
+        drawWorld(g, map, true);
+    }
+
+    private void drawWorld(Graphics2D g, WorldMap map, boolean traffic) {
         Layout layout = map.layout();
         RoadNetwork network = RoadNetwork.of(layout);
         MapShapes shapes = new MapShapes(g, style);
@@ -175,7 +191,7 @@ public final class MapRenderer {
         for (ParkedCar car : layout.parkedCars()) {
             shapes.box(car.footprint(), MapStyle.PARKED_CAR, MapStyle.PARKED_OUTLINE, 1.2);
         }
-        for (StartPose pose : map.movingCars()) {
+        for (StartPose pose : traffic ? map.movingCars() : java.util.List.<StartPose>of()) {
             Box body = pose.footprint(Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH);
             shapes.movingCar(body, pose.position().x(), pose.position().y(), pose.heading().bearing());
         }
@@ -206,14 +222,14 @@ public final class MapRenderer {
         g.draw(line);
     }
 
-    private LabelPlacer drawLabels(Graphics2D g, WorldMap map, Rectangle2D bounds) {
+    private LabelPlacer drawLabels(Graphics2D g, WorldMap map, boolean traffic, Rectangle2D bounds) {
         Layout layout = map.layout();
         LabelPlacer labels = new LabelPlacer(g, style, bounds);
         double r = MapStyle.TARGET_RADIUS * scale;
         for (ParkedCar car : layout.parkedCars()) {
             labels.reserve(pixelBounds(car.footprint().bounds()));
         }
-        for (StartPose pose : map.movingCars()) {
+        for (StartPose pose : traffic ? map.movingCars() : java.util.List.<StartPose>of()) {
             labels.reserve(pixelBounds(pose.footprint(Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH).bounds()));
         }
         layout.target().ifPresent(t -> labels.reserve(new Rectangle2D.Double(

@@ -73,6 +73,53 @@ public final class OutputFile implements AutoCloseable {
         }
     }
 
+    /**
+     * Whether writing {@code a} and writing {@code b} would write one file, so that one output
+     * would replace the other: the same path, a link and the file it names (however spelt), or two
+     * hard links to one file. A device or pipe is written into, not replaced, so naming it twice
+     * ({@code /dev/null}) loses nothing and is not a clash.
+     */
+    public static boolean sameFile(Path a, Path b) {
+        Path ra = identity(a);
+        Path rb = identity(b);
+        if (!ra.equals(rb)) {
+            try {
+                return Files.exists(ra) && Files.exists(rb) && Files.isSameFile(ra, rb);
+            } catch (IOException e) {
+                return false;
+            }
+        }
+        return !Files.exists(ra) || Files.isRegularFile(ra);
+    }
+
+    /**
+     * The file that writing {@code file} changes: its real path when it exists; for one not yet
+     * there, the real path of its folder and its name; for a link to a file not yet there, that file.
+     */
+    static Path identity(Path file) {
+        Path path = file.toAbsolutePath().normalize();
+        for (int links = 0; links < 40; links++) { // a loop of links ends somewhere
+            try {
+                return path.toRealPath();
+            } catch (IOException missing) {
+                if (!Files.isSymbolicLink(path)) {
+                    break;
+                }
+                try {
+                    path = path.resolveSibling(Files.readSymbolicLink(path)).toAbsolutePath().normalize();
+                } catch (IOException e) {
+                    break;
+                }
+            }
+        }
+        Path parent = path.getParent();
+        try {
+            return parent == null ? path : parent.toRealPath().resolve(path.getFileName());
+        } catch (IOException e) {
+            return path;
+        }
+    }
+
     public OutputStream stream() {
         return stream;
     }

@@ -1,9 +1,7 @@
 package sitcov.report;
 
-import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
-import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
@@ -24,8 +22,8 @@ public final class ReplayPicture {
     }
 
     private static final int TITLE = 64;
-    private static final Color EFFECT = new Color(0xFF8C00);
-    private static final Color NEW_ACCIDENT = new Color(0xD7263D);
+    static final Color EFFECT = new Color(0xFF8C00);
+    static final Color NEW_ACCIDENT = new Color(0xD7263D);
 
     private final int scale;
 
@@ -41,7 +39,8 @@ public final class ReplayPicture {
                                 java.util.Optional<Accident> newAccident) {
         RunRenderer renderer = new RunRenderer(scale);
         BufferedImage left = renderer.render(map, faultFree.trajectory(), faultFree.result());
-        BufferedImage right = renderer.render(map, faulty.trajectory(), faulty.result());
+        BufferedImage right = renderer.render(map, faulty.trajectory(), faulty.result(),
+                highlights(faulty, activation, newAccident));
         int gap = 12;
         BufferedImage image = new BufferedImage(left.getWidth() + gap + right.getWidth(), TITLE + left.getHeight(),
                 BufferedImage.TYPE_INT_RGB);
@@ -54,27 +53,39 @@ public final class ReplayPicture {
             g.drawImage(left, 0, TITLE, null);
             g.drawImage(right, left.getWidth() + gap, TITLE, null);
             title(g, left.getWidth(), gap, activation, verdict);
-            int dx = left.getWidth() + gap;
-            if (activation.effective()) {
-                int i = entryOf(faulty.trajectory(), activation.firstEffectiveTick());
-                if (i >= 0) {
-                    ring(g, dx + faulty.trajectory().x(i) * scale, TITLE + faulty.trajectory().y(i) * scale, EFFECT,
-                            "fault " + activation.fault().id() + " first acts, t=" + activation.firstEffectiveTick(), false);
-                }
-            }
-            newAccident.ifPresent(a -> ring(g, dx + a.x() * scale, TITLE + a.y() * scale, NEW_ACCIDENT,
-                    "first new accident, t=" + a.tick(), true));
         } finally {
             g.dispose();
         }
         return image;
     }
 
+    /**
+     * The faulty side's marks, drawn by {@link RunRenderer} so that their labels and the run's share
+     * one placer: a ring where the fault first acted, and the first new accident singled out.
+     */
+    static RunRenderer.Highlights highlights(Side faulty, Activation activation, java.util.Optional<Accident> newAccident) {
+        java.util.List<RunRenderer.Ring> rings = new java.util.ArrayList<>();
+        if (activation.effective()) {
+            int i = entryOf(faulty.trajectory(), activation.firstEffectiveTick());
+            if (i >= 0) {
+                rings.add(new RunRenderer.Ring(faulty.trajectory().x(i), faulty.trajectory().y(i), EFFECT,
+                        "fault " + activation.fault().id() + " first acts, t=" + activation.firstEffectiveTick()));
+            }
+        }
+        java.util.Optional<Accident> drawn = newAccident.filter(faulty.result().accidents()::contains);
+        if (newAccident.isPresent() && drawn.isEmpty()) { // not one of the run's own: ring it on its own
+            Accident a = newAccident.get();
+            rings.add(new RunRenderer.Ring(a.x(), a.y(), NEW_ACCIDENT, "first new accident, t=" + a.tick()));
+        }
+        return new RunRenderer.Highlights(rings, drawn, NEW_ACCIDENT, "first new accident: ");
+    }
+
     /** The verdict in one line, saying where the experiment stopped the faulty run. */
     public static String verdictLine(sitcov.experiment.FaultVerdict verdict, sitcov.experiment.FaultyRuns length) {
         return verdict.detection() + verdict.newAccident().map(a -> " by " + a.type() + " at tick " + a.tick()).orElse("")
-                + (length == sitcov.experiment.FaultyRuns.UNTIL_VERDICT && verdict.newAccident().isPresent()
-                        ? " (the experiment stopped this run there)" : "");
+                + (length == sitcov.experiment.FaultyRuns.UNTIL_VERDICT && verdict.newAccident()
+                        .filter(a -> a.type() != sitcov.oracle.AccidentType.TIMEOUT).isPresent()
+                        ? " (the experiment stopped this run there)" : ""); // a TIMEOUT is the run's own end
     }
 
     /** Runs the map without and with {@code verdict}'s fault (the faulty run to its end) and draws both. */
@@ -97,24 +108,6 @@ public final class ReplayPicture {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 14));
         g.drawString("the same map and internal seed; the runs part where the fault first acts", 12, 50);
         g.drawString(verdict, half + gap + 12, 50);
-    }
-
-    /** A ring with its label above it to the right, or below it (two rings near each other keep their labels apart). */
-    private void ring(Graphics2D g, double x, double y, Color colour, String label, boolean above) {
-        int r = Math.max(10, 3 * scale);
-        g.setStroke(new BasicStroke(3f));
-        g.setColor(colour);
-        g.drawOval((int) Math.round(x) - r, (int) Math.round(y) - r, 2 * r, 2 * r);
-        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 13));
-        FontMetrics fm = g.getFontMetrics();
-        int lx = (int) Math.round(x) + r + 4;
-        int ly = above ? (int) Math.round(y) - r : (int) Math.round(y) + r + fm.getAscent();
-        g.setColor(MapStyle.LABEL_BACKGROUND);
-        g.fillRect(lx - 3, ly - fm.getAscent() - 2, fm.stringWidth(label) + 6, fm.getHeight() + 4);
-        g.setColor(colour);
-        g.drawRect(lx - 3, ly - fm.getAscent() - 2, fm.stringWidth(label) + 6, fm.getHeight() + 4);
-        g.setColor(MapStyle.TEXT);
-        g.drawString(label, lx, ly);
     }
 
     private static int entryOf(TrajectoryRecorder t, long tick) {

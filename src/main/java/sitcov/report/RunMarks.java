@@ -47,7 +47,13 @@ final class RunMarks {
 
     /** The path of the front centre from the start pose, one colour run per state (metres). */
     void path(WorldMap map, TrajectoryRecorder t, double pixels) {
-        if (t.ticks() == 0) {
+        path(map, t, pixels, t.ticks());
+    }
+
+    /** The path as far as its first {@code entries} entries: the path driven so far, in an animation. */
+    void path(WorldMap map, TrajectoryRecorder t, double pixels, int entries) {
+        int n = Math.min(entries, t.ticks());
+        if (n <= 0) {
             return;
         }
         StartPose start = map.layout().carStart().orElse(null);
@@ -59,11 +65,11 @@ final class RunMarks {
             double x = px;
             double y = py;
             int i = 0;
-            while (i < t.ticks()) {
+            while (i < n) {
                 Color c = colour(t, i);
                 Path2D.Double run = new Path2D.Double();
                 run.moveTo(x, y);
-                while (i < t.ticks() && colour(t, i).equals(c)) {
+                while (i < n && colour(t, i).equals(c)) {
                     x = t.x(i);
                     y = t.y(i);
                     run.lineTo(x, y);
@@ -74,15 +80,15 @@ final class RunMarks {
                 g.draw(run);
             }
         }
-        chevrons(t, pixels);
+        chevrons(t, pixels, n);
     }
 
     /** Notched arrowheads every {@link #CHEVRON_SPACING} metres of path, pointing the way the car went. */
-    private void chevrons(TrajectoryRecorder t, double pixels) {
+    private void chevrons(TrajectoryRecorder t, double pixels, int entries) {
         double size = Math.max(0.9, 2.5 * pixels / style.scale());
         double travelled = CHEVRON_SPACING / 2;
         g.setStroke(style.pixelStroke(1));
-        for (int i = 1; i < t.ticks(); i++) {
+        for (int i = 1; i < entries; i++) {
             travelled += Math.hypot(t.x(i) - t.x(i - 1), t.y(i) - t.y(i - 1));
             if (travelled < CHEVRON_SPACING) {
                 continue;

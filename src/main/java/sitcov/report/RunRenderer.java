@@ -14,6 +14,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.stream.Collectors;
 import sitcov.oracle.Accident;
 import sitcov.oracle.RunResult;
@@ -37,9 +38,43 @@ public final class RunRenderer {
         this.scale = new MapRenderer(pixelsPerMetre).pixelsPerMetre();
     }
 
+    /** A ring round a point of the run (metres), labelled: where a fault first acted, say. */
+    public record Ring(double x, double y, Color colour, String label) {
+    }
+
+    /**
+     * What {@link #render} adds to a plain run: rings, and one accident singled out, its marker
+     * ringed in {@code colour} and its label starting with {@code prefix}.
+     */
+    public record Highlights(List<Ring> rings, Optional<Accident> accident, Color colour, String prefix) {
+        public static final Highlights NONE = new Highlights(List.of(), Optional.empty(), Color.BLACK, "");
+
+        public Highlights {
+            rings = List.copyOf(rings);
+        }
+    }
+
+    /** A drawn run and the tags its labels took, in pixels. */
+    record Picture(BufferedImage image, List<Rectangle2D> labels) {
+    }
+
     /** The whole map at this renderer's scale, {@link MapRenderer#imageSize} big, with the run on it. */
     public BufferedImage render(WorldMap map, TrajectoryRecorder trajectory, RunResult result) {
+        return render(map, trajectory, result, Highlights.NONE);
+    }
+
+    /** The run as {@link #render(WorldMap, TrajectoryRecorder, RunResult)} draws it, with {@code highlights}. */
+    public BufferedImage render(WorldMap map, TrajectoryRecorder trajectory, RunResult result, Highlights highlights) {
+        return draw(map, trajectory, result, highlights).image();
+    }
+
+    /**
+     * Every label of the picture (the map's, the accidents', the rings') goes through one
+     * {@link LabelPlacer}, so none is drawn over another.
+     */
+    Picture draw(WorldMap map, TrajectoryRecorder trajectory, RunResult result, Highlights highlights) {
         MapStyle style = new MapStyle(scale);
+        List<Rectangle2D> placed = new ArrayList<>();
         int worldHeight = MapRenderer.worldHeightPixels(scale);
         AffineTransform world = AffineTransform.getScaleInstance(scale, scale);
         Rectangle2D worldArea = new Rectangle2D.Double(0, 0, MapRenderer.imageSize(scale).width, worldHeight);
@@ -51,7 +86,18 @@ public final class RunRenderer {
 
             @Override
             public void drawLabelled(Graphics2D pixels, LabelPlacer labels) {
-                accidents(pixels, style, labels, world, result.accidents(), worldArea, true);
+                double r = ringRadius(style);
+                for (Ring ring : highlights.rings()) {
+                    Point2D p = world.transform(new Point2D.Double(ring.x(), ring.y()), null);
+                    ring(pixels, p, r, ring.colour());
+                    labels.reserve(new Rectangle2D.Double(p.getX() - r, p.getY() - r, 2 * r, 2 * r));
+                }
+                accidents(pixels, style, labels, world, result.accidents(), worldArea, true, highlights);
+                for (Ring ring : highlights.rings()) {
+                    Point2D p = world.transform(new Point2D.Double(ring.x(), ring.y()), null);
+                    labels.place(ring.label(), p.getX(), p.getY(), r + 3, r + 1, ring.colour());
+                }
+                placed.addAll(labels.placed());
             }
         });
         Graphics2D g = graphics(image);
@@ -60,7 +106,18 @@ public final class RunRenderer {
         } finally {
             g.dispose();
         }
-        return image;
+        return new Picture(image, List.copyOf(placed));
+    }
+
+    /** Radius in pixels of a ring round a point of the run: wider than an accident marker, so both show. */
+    private static double ringRadius(MapStyle style) {
+        return Math.max(10, 3 * style.scale());
+    }
+
+    private static void ring(Graphics2D g, Point2D p, double r, Color colour) {
+        g.setStroke(new java.awt.BasicStroke(3f));
+        g.setColor(colour);
+        g.draw(new java.awt.geom.Ellipse2D.Double(p.getX() - r, p.getY() - r, 2 * r, 2 * r));
     }
 
     /**
@@ -90,7 +147,8 @@ public final class RunRenderer {
             drawRun(g, style, world, map, trajectory, 1, true, 3);
             tickNumbers(g, textStyle, world, trajectory, size);
             LabelPlacer labels = new LabelPlacer(g, textStyle, new Rectangle2D.Double(0, 0, size, size));
-            accidents(g, textStyle, labels, world, result.accidents(), new Rectangle2D.Double(0, 0, size, size), false);
+            accidents(g, textStyle, labels, world, result.accidents(), new Rectangle2D.Double(0, 0, size, size), false,
+                    Highlights.NONE);
             g.setFont(textStyle.font(Font.BOLD));
             FontMetrics fm = g.getFontMetrics();
             String title = String.format(Locale.ROOT, "seed %d / %d · around (%.1f, %.1f) · %d px/m · grid 10 m",
@@ -141,7 +199,7 @@ public final class RunRenderer {
      * or left out.
      */
     private static void accidents(Graphics2D g, MapStyle style, LabelPlacer labels, AffineTransform world,
-                                  List<Accident> accidents, Rectangle2D area, boolean pin) {
+                                  List<Accident> accidents, Rectangle2D area, boolean pin, Highlights highlights) {
         double r = Math.max(7, 0.6 * style.scale());
         List<Point2D> anchors = new ArrayList<>();
         List<List<Accident>> groups = new ArrayList<>();
@@ -175,12 +233,18 @@ public final class RunRenderer {
         for (int i = shown.size() - 1; i >= 0; i--) { // the first accident on top
             new RunMarks(g, style).marker(shown.get(i).type(), at.get(i).getX(), at.get(i).getY(), r);
         }
+        for (int i = 0; i < shown.size(); i++) {
+            if (highlights.accident().filter(shown.get(i)::equals).isPresent()) {
+                ring(g, at.get(i), ringRadius(style), highlights.colour());
+            }
+        }
         for (int k = 0; k < groups.size(); k++) {
             List<Accident> group = groups.get(k);
-            String text = group.stream().limit(MAX_PER_LABEL).map(a -> a.type() + " t=" + a.tick() + offMap(a))
+            boolean singled = highlights.accident().filter(group::contains).isPresent();
+            String text = (singled ? highlights.prefix() : "") + group.stream().limit(MAX_PER_LABEL).map(a -> a.type() + " t=" + a.tick() + offMap(a))
                     .collect(Collectors.joining(", "))
                     + (group.size() > MAX_PER_LABEL ? " +" + (group.size() - MAX_PER_LABEL) + " more" : "");
-            Color accent = RunMarks.markerColour(group.get(0).type());
+            Color accent = singled ? highlights.colour() : RunMarks.markerColour(group.get(0).type());
             labels.place(text, anchors.get(k).getX(), anchors.get(k).getY(), r + 3, r + 1,
                     accent.equals(Color.WHITE) ? Color.BLACK : accent);
         }

@@ -6,6 +6,7 @@ import java.awt.Dimension;
 import java.awt.Font;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.awt.Shape;
 import java.awt.geom.AffineTransform;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Path2D;
@@ -17,9 +18,9 @@ import sitcov.geom.Bearing;
 import sitcov.oracle.Accident;
 import sitcov.report.MapRenderer;
 import sitcov.report.MapShapes;
+import sitcov.report.OutcomeText;
 import sitcov.vehicles.AutonomousCar;
 import sitcov.vehicles.Vehicle;
-import sitcov.world.WorldMap;
 
 /**
  * Paints one live run as it stands: the map (drawn once), the car's sensors (the camera's 90° fan to
@@ -32,6 +33,7 @@ public final class RunPainter {
     static final Color CAR = new Color(0x00E5FF);
     static final Color MOVING = new Color(0xB84FD0);
     static final Color ACCIDENT = new Color(0xD7263D);
+    private static final Color REACHED = new Color(0x1B6E20);
     private static final Color CAMERA = new Color(255, 230, 80, 70);
     private static final Color LIDAR = new Color(255, 255, 255, 150);
     static final Color CAMERA_HIT = new Color(0xFFD400);
@@ -47,9 +49,7 @@ public final class RunPainter {
         this.run = run;
         this.title = title;
         this.scale = pixelsPerMetre;
-        WorldMap map = run.map();
-        this.base = new MapRenderer(pixelsPerMetre).render(new WorldMap(map.layout(), List.of(),
-                map.movingCarsRequested(), map.movingCarOmissions()));
+        this.base = new MapRenderer(pixelsPerMetre).renderWithoutTraffic(run.map());
     }
 
     public LiveRun run() {
@@ -64,6 +64,12 @@ public final class RunPainter {
         return new Dimension(base.getWidth(), HEADER + base.getHeight());
     }
 
+    /** The size of a pane at {@code pixelsPerMetre}: the header over the map and its caption. */
+    static Dimension paneSize(int pixelsPerMetre) {
+        Dimension map = MapRenderer.imageSize(pixelsPerMetre);
+        return new Dimension(map.width, HEADER + map.height);
+    }
+
     public void paint(Graphics2D g) {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
@@ -71,6 +77,9 @@ public final class RunPainter {
         g.fillRect(0, 0, base.getWidth(), HEADER);
         header(g);
         g.drawImage(base, 0, HEADER, null);
+        Shape clip = g.getClip();
+        // the scene stays on the map: the LIDAR's reach or a car off the edge never covers the caption
+        g.clipRect(0, HEADER, base.getWidth(), MapRenderer.worldHeightPixels(scale));
         AffineTransform saved = g.getTransform();
         g.translate(0, HEADER);
         g.scale(scale, scale);
@@ -84,24 +93,49 @@ public final class RunPainter {
         body(g, car, CAR);
         g.setTransform(saved);
         accidents(g, run.detector().accidents());
+        g.setClip(clip);
     }
 
     private void header(Graphics2D g) {
-        AutonomousCar car = run.scene().autonomousCar();
         g.setColor(Color.BLACK);
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 14));
         g.drawString(title, 8, 18);
-        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
-        g.drawString(String.format(Locale.ROOT, "%s · %.1f km/h · lane %s · %s%s%s · steered by %s · speed set by %s",
-                run.tick() < 0 ? "not started (press Play or Step)" : "tick " + run.tick(), car.speed() * 18, car.lane(), car.overtakingStage().name().toLowerCase(Locale.ROOT).replace('_', ' '),
+        boolean ended = run.detector().outcome() != null;
+        List<Accident> accidents = run.detector().accidents();
+        g.setColor(!ended ? Color.BLACK : accidents.isEmpty() ? REACHED : ACCIDENT);
+        fitted(g, status(), ended ? Font.BOLD : Font.PLAIN, 36);
+        g.setColor(accidents.isEmpty() ? Color.DARK_GRAY : ACCIDENT);
+        fitted(g, accidents.isEmpty() ? "no accident" : accidents.size() + " accident" + (accidents.size() == 1 ? "" : "s")
+                + ", the last " + accidents.get(accidents.size() - 1).type() + " at tick "
+                + accidents.get(accidents.size() - 1).tick(), Font.PLAIN, 52);
+    }
+
+    /** Draws a header line in 12 points, smaller (down to 9) if the pane is narrow, cut short only if even that is too wide. */
+    private void fitted(Graphics2D g, String text, int style, int baseline) {
+        int room = base.getWidth() - 16;
+        int points = 12;
+        g.setFont(new Font(Font.SANS_SERIF, style, points));
+        while (points > 9 && g.getFontMetrics().stringWidth(text) > room) {
+            g.setFont(new Font(Font.SANS_SERIF, style, --points));
+        }
+        while (g.getFontMetrics().stringWidth(text) > room && text.length() > 2) {
+            text = text.substring(0, text.length() - 2) + "…";
+        }
+        g.drawString(text, 8, baseline);
+    }
+
+    /** The header's second line: the car's state while the run goes on, how it ended once it has. */
+    String status() {
+        if (run.detector().outcome() != null) {
+            return "Run over: " + OutcomeText.of(run.detector().outcome(), run.detector().ticks(), run.detector().accidents());
+        }
+        AutonomousCar car = run.scene().autonomousCar();
+        return String.format(Locale.ROOT, "%s · %.1f km/h · lane %s · %s%s%s · steered by %s · speed set by %s",
+                run.tick() < 0 ? "not started (press Play or Step)" : "tick " + run.tick(), car.speed() * 18, car.lane(),
+                car.overtakingStage().name().toLowerCase(Locale.ROOT).replace('_', ' '),
                 car.isCrossingJunction() ? " · crossing a junction" : "", car.isWaitingAtJunction() ? " · waiting" : "",
                 car.steeredBy() == null ? "nothing yet" : car.steeredBy(), car.limitedBy() == null ? "nothing"
-                        : car.limitedBy()), 8, 36);
-        List<Accident> accidents = run.detector().accidents();
-        g.setColor(accidents.isEmpty() ? Color.DARK_GRAY : ACCIDENT);
-        g.drawString(accidents.isEmpty() ? "no accident" : accidents.size() + " accident" + (accidents.size() == 1 ? "" : "s")
-                + ", the last " + accidents.get(accidents.size() - 1).type() + " at tick "
-                + accidents.get(accidents.size() - 1).tick(), 8, 52);
+                        : car.limitedBy());
     }
 
     /**

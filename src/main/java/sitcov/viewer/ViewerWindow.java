@@ -3,6 +3,8 @@ package sitcov.viewer;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
+import java.awt.GraphicsEnvironment;
+import java.awt.Rectangle;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.GridLayout;
@@ -26,6 +28,13 @@ import javax.swing.Timer;
 public final class ViewerWindow {
     /** Frames a second while playing; the slider sets how many ticks each frame advances. */
     private static final int FRAME_MILLIS = 40;
+    /** Pixels between two panes. */
+    static final int GAP = 8;
+    /**
+     * Room the window needs beyond its panes: title bar, the row of controls, borders. A generous
+     * guess made before any window exists, so the scale can be chosen before the runs are drawn.
+     */
+    static final Dimension CHROME = new Dimension(40, 130);
 
     private final Supplier<List<RunPainter>> fresh;
     private final List<RunPainter> painters = new ArrayList<>();
@@ -39,6 +48,31 @@ public final class ViewerWindow {
         this.fresh = fresh;
         this.timer = new Timer(FRAME_MILLIS, e -> advance(speed.getValue()));
         restart();
+    }
+
+    /** The screen's usable area (without task bars and docks), where the window must fit. */
+    public static Rectangle usableScreen() {
+        return GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
+    }
+
+    /**
+     * The largest scale (pixels a metre, from {@code largest} down to 1) at which a window of
+     * {@code panes} panes fits in {@code usable}; at 1 it may still not fit, and then it scrolls.
+     */
+    public static int scaleFor(Dimension usable, int panes, int largest) {
+        for (int scale = largest; scale > 1; scale--) {
+            Dimension window = windowSize(panes, scale);
+            if (window.width <= usable.width && window.height <= usable.height) {
+                return scale;
+            }
+        }
+        return 1;
+    }
+
+    /** The window's size with {@code panes} panes side by side at {@code scale}. */
+    static Dimension windowSize(int panes, int scale) {
+        Dimension pane = RunPainter.paneSize(scale);
+        return new Dimension(panes * pane.width + (panes - 1) * GAP + CHROME.width, pane.height + CHROME.height);
     }
 
     public void show() {
@@ -60,7 +94,9 @@ public final class ViewerWindow {
         frame.getContentPane().add(controls, BorderLayout.NORTH);
         frame.getContentPane().add(new JScrollPane(panes), BorderLayout.CENTER);
         frame.pack();
-        frame.setSize(Math.min(frame.getWidth(), 1600), Math.min(frame.getHeight() + 40, 1000));
+        Rectangle usable = usableScreen();
+        frame.setSize(Math.min(frame.getWidth(), usable.width), Math.min(frame.getHeight(), usable.height));
+        frame.setLocation(usable.x, usable.y);
         frame.setVisible(true);
     }
 
@@ -95,7 +131,7 @@ public final class ViewerWindow {
         painters.clear();
         painters.addAll(fresh.get());
         panes.removeAll();
-        panes.setLayout(new GridLayout(1, painters.size(), 8, 0));
+        panes.setLayout(new GridLayout(1, painters.size(), GAP, 0));
         for (RunPainter p : painters) {
             panes.add(pane(p));
         }

@@ -137,4 +137,16 @@ class MapCommandTest {
                 drawn.err());
         assertFalse(drawn.err().contains("I/O error writing PNG file!"), drawn.err());
     }
+
+    @Test
+    void aPictureMayNotBeWrittenOverTheSituationItIsDrawnFrom() throws Exception {
+        Path situation = folder.resolve("read.situation");
+        assertEquals(0, CliRunner.run("map", "--seed", "3", "--save", situation.toString()).exitCode());
+        String before = Files.readString(situation);
+        Path link = Files.createSymbolicLink(folder.resolve("picture.png"), situation);
+        CliRunner r = CliRunner.run("map", "--load", situation.toString(), "--png", link.toString());
+        assertEquals(ExitCode.USAGE, r.exitCode());
+        assertTrue(r.err().contains("--load " + situation + " and --png " + link + " are the same file"), r.err());
+        assertEquals(before, Files.readString(situation), "the situation file is untouched");
+    }
 }

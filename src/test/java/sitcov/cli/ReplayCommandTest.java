@@ -11,12 +11,15 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.UnaryOperator;
 import javax.imageio.ImageIO;
-import javax.imageio.ImageReader;
-import javax.imageio.stream.ImageInputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.experiment.Simulator;
+import sitcov.oracle.Outcome;
+import sitcov.oracle.RunResult;
+import sitcov.report.GifFile;
 import sitcov.report.ResultsFolder;
 import sitcov.report.SignedEdits;
+import sitcov.world.MapGenerator;
 
 class ReplayCommandTest {
     /** The number (1 = first under the header) of the first row of the tiny reference run whose fault was FOUND. */
@@ -37,27 +40,33 @@ class ReplayCommandTest {
         CliRunner r = CliRunner.run("replay", ResultsFolders.tinyReference().toString(), "--row",
                 Integer.toString(firstFoundRow()), "--png", png.toString(), "--gif", gif.toString());
         assertEquals(0, r.exitCode(), r.err());
-        assertTrue(r.out().contains("replays exactly") && r.out().contains(": FOUND"), r.out());
+        assertTrue(r.out().contains("replays exactly") && r.out().contains("Verdict: FOUND"), r.out());
+        // the faulty run's own outcome, as the row records it (outcome and ticks columns), not its twin's
+        String[] cells = Files.readAllLines(ResultsFolders.tinyReference().resolve(ResultsFolder.RUNS))
+                .get(firstFoundRow()).split(",", -1);
+        long lastTick = Long.parseLong(cells[13]) - 1;
+        String outcome = switch (cells[12]) {
+            case "TARGET_REACHED" -> "Reached the Target at t=" + lastTick;
+            case "TIMEOUT" -> "TIMEOUT at t=" + lastTick;
+            default -> "Stopped at t=" + lastTick;
+        };
+        assertTrue(r.out().contains("With fault " + cells[11] + " (") && line(r.out(), "With fault").contains(outcome),
+                r.out());
+        assertTrue(r.out().contains("Without the fault (its twin"), r.out());
         BufferedImage image = ImageIO.read(png.toFile());
         assertTrue(image.getWidth() > 2 * image.getHeight(), "two maps side by side: " + image.getWidth() + "x" + image.getHeight());
-        ImageReader reader = ImageIO.getImageReadersByFormatName("gif").next();
-        try (ImageInputStream in = ImageIO.createImageInputStream(gif.toFile())) {
-            reader.setInput(in);
-            int frames = reader.getNumImages(true);
-            assertTrue(frames >= 2, frames + " frames");
-            BufferedImage first = reader.read(0);
-            BufferedImage last = reader.read(frames - 1);
-            assertTrue(first.getWidth() > 2 * first.getHeight(), "both runs side by side in the animation");
-            int moved = 0;
-            for (int y = 0; y < first.getHeight(); y += 2) {
-                for (int x = 0; x < first.getWidth(); x += 2) {
-                    moved += first.getRGB(x, y) != last.getRGB(x, y) ? 1 : 0;
-                }
+        GifFile animation = GifFile.read(gif, 0, -1);
+        assertTrue(animation.frames() >= 2, animation.frames() + " frames");
+        BufferedImage first = animation.shown().get(0);
+        BufferedImage last = animation.shown().get(1);
+        assertTrue(first.getWidth() > 2 * first.getHeight(), "both runs side by side in the animation");
+        int moved = 0;
+        for (int y = 0; y < first.getHeight(); y += 2) {
+            for (int x = 0; x < first.getWidth(); x += 2) {
+                moved += first.getRGB(x, y) != last.getRGB(x, y) ? 1 : 0;
             }
-            assertTrue(moved > 20, "the cars moved between the first and the last frame: " + moved + " pixels differ");
-        } finally {
-            reader.dispose();
         }
+        assertTrue(moved > 20, "the cars moved between the first and the last frame: " + moved + " pixels differ");
     }
 
     @Test
@@ -101,6 +110,12 @@ class ReplayCommandTest {
         CliRunner r = CliRunner.run("replay", "--seed", "1", "--fault", "17", "--png", png.toString());
         assertEquals(0, r.exitCode(), r.err());
         assertTrue(Files.size(png) > 0);
+        // seed 1 reaches its Target without faults; fault 17 leaves the car standing until its time is up
+        RunResult twin = Simulator.run(MapGenerator.generate(1), 1);
+        assertEquals(Outcome.TARGET_REACHED, twin.outcome());
+        assertTrue(line(r.out(), "Without the fault").endsWith("Reached the Target at t=" + (twin.ticks() - 1)), r.out());
+        assertTrue(line(r.out(), "With fault 17").contains("TIMEOUT at t=4999"), r.out());
+        assertTrue(line(r.out(), "With fault 17").contains("Verdict: FOUND by TIMEOUT"), r.out());
     }
 
     @Test
@@ -111,5 +126,25 @@ class ReplayCommandTest {
         CliRunner fault = CliRunner.run("replay", "--seed", "1");
         assertEquals(ExitCode.USAGE, fault.exitCode());
         assertTrue(fault.err().contains("--fault names one fault"), fault.err());
+    }
+
+    @Test
+    void thePictureAndTheAnimationMayNotBeOneFileHoweverTheyAreSpelt(@TempDir Path dir) throws Exception {
+        CliRunner same = CliRunner.run("replay", "--seed", "1", "--fault", "17", "--png", dir.resolve("f").toString(),
+                "--gif", dir.resolve("f").toString());
+        assertEquals(ExitCode.USAGE, same.exitCode());
+        assertTrue(same.err().contains("--png and --gif both name"), same.err());
+        Path link = Files.createSymbolicLink(dir.resolve("link.gif"), dir.resolve("replay.png"));
+        CliRunner linked = CliRunner.run("replay", "--seed", "1", "--fault", "17", "--png", dir.resolve("replay.png").toString(),
+                "--gif", link.toString());
+        assertEquals(ExitCode.USAGE, linked.exitCode());
+        assertTrue(linked.err().contains("--png " + dir.resolve("replay.png") + " and --gif " + link + " are the same file"),
+                linked.err());
+        assertFalse(Files.exists(dir.resolve("f")) || Files.exists(dir.resolve("replay.png")), "nothing written");
+    }
+
+    /** The line of {@code out} that starts with {@code start}. */
+    private static String line(String out, String start) {
+        return out.lines().filter(l -> l.startsWith(start)).findFirst().orElse("");
     }
 }

@@ -134,6 +134,26 @@ class MapRendererTest {
     }
 
     @Test
+    void withoutTrafficTheMovingCarsAreNotDrawnButTheCaptionStillCountsThemAsTheMapHasThem() {
+        assertFalse(SEED_1.movingCars().isEmpty(), "seed 1 must have moving cars for this test");
+        BufferedImage full = new MapRenderer().render(SEED_1);
+        BufferedImage bare = new MapRenderer().renderWithoutTraffic(SEED_1);
+        StartPose moving = SEED_1.movingCars().get(0);
+        Vec2 rear = moving.footprint(Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH).centre()
+                .moved(moving.heading().bearing(), -1.5);
+        int x = (int) Math.round(rear.x() * SCALE);
+        int y = (int) Math.round(rear.y() * SCALE);
+        assertColour(MapStyle.MOVING_CAR, full, x, y);
+        assertColour(MapStyle.ASPHALT, bare, x, y);
+        // the caption (seed, counts "N moving cars", legend) is the full map's, pixel for pixel
+        for (int row = MapRenderer.worldHeightPixels(SCALE); row < full.getHeight(); row++) {
+            for (int col = 0; col < full.getWidth(); col++) {
+                assertEquals(full.getRGB(col, row), bare.getRGB(col, row), "caption pixel " + col + "," + row);
+            }
+        }
+    }
+
+    @Test
     void differentSeedsRenderDifferentImages() {
         MapRenderer renderer = new MapRenderer(2);
         assertFalse(samePixels(renderer.render(MapGenerator.generate(1)), renderer.render(MapGenerator.generate(2))));

@@ -75,4 +75,27 @@ class OutputFileTest {
             assertEquals(1, s.count(), "the temporary file is removed");
         }
     }
+
+    @Test
+    void aLinkAndTheFileItNamesAreOneFileEvenBeforeEitherIsWritten() throws Exception {
+        Path target = dir.resolve("trace.csv");
+        Path link = Files.createSymbolicLink(dir.resolve("picture.png"), Path.of("trace.csv"));
+        assertTrue(OutputFile.sameFile(link, target), "a dangling link and its target");
+        Files.writeString(target, "x");
+        assertTrue(OutputFile.sameFile(target, link), "a link and its existing target");
+        Files.createDirectories(dir.resolve("sub"));
+        assertTrue(OutputFile.sameFile(dir.resolve("new.png"), dir.resolve("sub/../new.png")), "one path spelt two ways");
+        Path hard = Files.createLink(dir.resolve("hard.csv"), target);
+        assertTrue(OutputFile.sameFile(hard, target), "two hard links to one file");
+        assertFalse(OutputFile.sameFile(dir.resolve("a.png"), dir.resolve("b.png")));
+        assertFalse(OutputFile.sameFile(link, dir.resolve("new.png")));
+    }
+
+    @Test
+    void aDeviceNamedTwiceIsNoClashForNothingIsReplaced() {
+        Path devNull = Path.of("/dev/null");
+        if (Files.exists(devNull)) {
+            assertFalse(OutputFile.sameFile(devNull, devNull));
+        }
+    }
 }

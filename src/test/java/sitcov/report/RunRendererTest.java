@@ -1,6 +1,7 @@
 package sitcov.report;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -152,6 +153,32 @@ class RunRendererTest {
         assertEquals(picture.getRGB(100, 100), back.getRGB(100, 100));
         try (Stream<Path> files = Files.list(dir)) {
             assertEquals(List.of(file), files.toList());
+        }
+    }
+
+    @Test
+    void labelsOfMarksCrowdedRoundOnePointNeitherOverlapOneAnotherNorTheTargetsLabel() {
+        var target = MAP.layout().target().orElseThrow().position();
+        double x = target.x();
+        double y = target.y();
+        // four accidents 4 m apart round the Target (far enough apart for a label each), a ring on one
+        // of them and one singled out: seven labels with the map's own Target and AR
+        Accident singled = new Accident(4999, AccidentType.TIMEOUT, x - 4, y, -1);
+        RunResult crowded = new RunResult(MAP.seed(), 100, Outcome.TIMEOUT, List.of(
+                new Accident(52, AccidentType.LEAVEROAD, x + 4, y, -1),
+                new Accident(60, AccidentType.CROSSCENTRELINE, x, y + 4, -1),
+                new Accident(70, AccidentType.CLASHWITHOBSTACLE, x, y - 4, -1),
+                singled), Map.of(), 5000);
+        RunRenderer.Highlights highlights = new RunRenderer.Highlights(
+                List.of(new RunRenderer.Ring(x - 4, y, Color.ORANGE, "fault 17 first acts, t=189")),
+                java.util.Optional.of(singled), Color.RED, "first new accident: ");
+        List<java.awt.geom.Rectangle2D> labels = new RunRenderer(SCALE).draw(MAP, trajectory, crowded, highlights).labels();
+        assertEquals(7, labels.size(), "Target, AR, four accidents and the ring each have a label");
+        for (int i = 0; i < labels.size(); i++) {
+            for (int j = i + 1; j < labels.size(); j++) {
+                assertFalse(labels.get(i).intersects(labels.get(j)), "labels " + i + " and " + j + " overlap: "
+                        + labels.get(i) + " " + labels.get(j));
+            }
         }
     }
 

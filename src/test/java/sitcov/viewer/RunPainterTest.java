@@ -5,10 +5,16 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
+import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import sitcov.experiment.LiveRun;
 import sitcov.experiment.Simulator;
+import sitcov.faults.Fault;
+import sitcov.oracle.Accident;
+import sitcov.oracle.Outcome;
+import sitcov.oracle.RunResult;
+import sitcov.report.MapRenderer;
 import sitcov.vehicles.AutonomousCar;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
@@ -71,5 +77,50 @@ class RunPainterTest {
             // the viewer steps it frame by frame; here all at once
         }
         assertEquals(Simulator.run(map, 7), live.record().result());
+    }
+
+    @Test
+    void onceARunHasEndedItsHeaderSaysHowInEachPane() {
+        // seed 2: without faults the car reaches the Target; with fault 4 it leaves the road on the way
+        WorldMap map = MapGenerator.generate(2);
+        RunPainter twin = new RunPainter(new LiveRun(map, 2, Set.of()), "without the fault", 3);
+        RunPainter faulty = new RunPainter(new LiveRun(map, 2, Set.of(Fault.ofId(4))), "with fault 4", 3);
+        ViewerWindow window = new ViewerWindow(() -> List.of(twin, faulty));
+        window.advance(1);
+        assertTrue(window.painters().get(0).status().contains("km/h"), window.painters().get(0).status());
+        for (int frame = 0; frame < 200; frame++) {
+            window.advance(20);
+        }
+        RunResult free = Simulator.run(map, 2);
+        RunResult withFault = Simulator.run(map, 2, Set.of(Fault.ofId(4)), (t, s, d) -> { }).result();
+        assertEquals(Outcome.TARGET_REACHED, free.outcome());
+        assertEquals(Outcome.TARGET_REACHED, withFault.outcome());
+        Accident first = withFault.accidents().get(0);
+        String twinStatus = window.painters().get(0).status();
+        String faultyStatus = window.painters().get(1).status();
+        assertEquals("Run over: Reached the Target at t=" + (free.ticks() - 1), twinStatus);
+        assertTrue(faultyStatus.startsWith("Run over: Reached the Target at t=" + (withFault.ticks() - 1) + " · "),
+                faultyStatus);
+        assertTrue(faultyStatus.contains(first.type() + " at t=" + first.tick()), faultyStatus);
+    }
+
+    @Test
+    void theSceneIsClippedToTheMapSoTheCaptionStaysAsTheMapDrewIt() {
+        // seed 1 ends at the Target 10 m from the map's south edge: the LIDAR's 25 m reach goes past it
+        WorldMap map = MapGenerator.generate(1);
+        RunPainter painter = new RunPainter(new LiveRun(map, 1, Set.of()), "test", 3);
+        while (painter.run().step()) {
+            // to the end
+        }
+        assertTrue(painter.run().scene().autonomousCar().y() > 100 - 25, "the case this test needs");
+        BufferedImage image = paint(painter);
+        BufferedImage bare = new MapRenderer(3).renderWithoutTraffic(map);
+        int differing = 0;
+        for (int y = MapRenderer.worldHeightPixels(3); y < bare.getHeight(); y++) {
+            for (int x = 0; x < bare.getWidth(); x++) {
+                differing += image.getRGB(x, RunPainter.HEADER + y) != bare.getRGB(x, y) ? 1 : 0;
+            }
+        }
+        assertEquals(0, differing, "caption pixels painted over");
     }
 }

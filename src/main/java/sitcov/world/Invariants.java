@@ -12,7 +12,10 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
+import java.util.Optional;
+import java.util.stream.Stream;
 import sitcov.geom.Box;
+import sitcov.geom.Compass;
 import sitcov.geom.Rect;
 import sitcov.geom.Vec2;
 
@@ -85,6 +88,9 @@ public final class Invariants {
             if (network.isInJunction(p.x(), p.y())) {
                 v.add(new Violation(Element.TARGET, 0, "the Target " + p + " is in a junction"));
             }
+            misnamedRoad(layout, network, t.roadId(), p).ifPresent(actual -> v.add(new Violation(Element.TARGET, 0,
+                    "the Target at " + at(p) + " names road " + t.roadId() + " but stands on road " + actual.id()
+                            + ": set its ROAD_ID to " + actual.id())));
             if (layout.parkedCars().stream().anyMatch(c -> c.footprint().contains(p.x(), p.y()))) {
                 v.add(new Violation(Element.TARGET, 0, "the Target " + p + " is inside a parked car"));
             } else if (Placement.nearParkedCar(p.x(), p.y(), layout.parkedCars(), Placement.TARGET_CLEARANCE)) {
@@ -158,6 +164,16 @@ public final class Invariants {
             if (!(arms == 1 && carriers == 1) && !(arms == 3 && carriers == 2)) {
                 v.add(new Violation(Element.JUNCTION, j.id(), "junction " + j.id() + " has " + arms + " arms on " + carriers
                         + " roads (a dead end has 1 arm on 1 road, a T-junction 3 arms on 2)"));
+            } else {
+                // the arms are written down, but the roads fix them: a shorter one would shrink the approach
+                // zone where no parked car may stand, a longer one widen it
+                Junction reach = RoadTreeBuilder.withArms(j.id(), j.centre(), layout.roads());
+                if (Stream.of(Compass.values()).anyMatch(c -> Math.abs(j.arm(c) - reach.arm(c)) > EPS)) {
+                    v.add(new Violation(Element.JUNCTION, j.id(), "junction " + j.id() + " has arms " + armsOf(j)
+                            + " but its roads reach " + armsOf(reach) + " from its centre (capped at "
+                            + Dimensions.APPROACH_LENGTH + " m): set ARM_NORTH ARM_EAST ARM_SOUTH ARM_WEST to "
+                            + reach.armNorth() + " " + reach.armEast() + " " + reach.armSouth() + " " + reach.armWest()));
+                }
             }
             for (int b = a + 1; b < junctions.size(); b++) {
                 if (j.square().overlaps(junctions.get(b).square())) {
@@ -178,29 +194,59 @@ public final class Invariants {
 
     private static void checkParkedCars(List<Violation> v, Layout layout, RoadNetwork network) {
         List<ParkedCar> cars = layout.parkedCars();
-        for (int a = 0; a < cars.size(); a++) {
-            ParkedCar car = cars.get(a);
+        List<Road> own = new ArrayList<>(cars.size());
+        for (ParkedCar car : cars) {
             Box body = car.footprint();
             if (!network.isOnRoad(body)) {
                 v.add(new Violation(Element.PARKED_CAR, car.id(), "parked car " + car.id() + " is not wholly on the road"));
             }
+            Optional<Road> misnamed = misnamedRoad(layout, network, car.roadId(), car.centre());
+            misnamed.ifPresent(actual -> v.add(new Violation(Element.PARKED_CAR, car.id(), "parked car " + car.id()
+                    + " at " + at(car.centre()) + " names road " + car.roadId() + " but stands on road " + actual.id()
+                    + ": set its ROAD_ID to " + actual.id())));
+            Road road = misnamed.isEmpty() && car.roadId() >= 0 && car.roadId() < layout.roads().size() ? layout.roads().get(car.roadId()) : null;
+            if (road != null && road.contains(car.centre().x(), car.centre().y()) && car.axis() != road.axis()) {
+                v.add(new Violation(Element.PARKED_CAR, car.id(), "parked car " + car.id() + " lies " + car.axis()
+                        + " on road " + road.id() + ", which runs " + road.axis() + ": set its AXIS to " + road.axis()));
+            }
+            // the spacing below is measured along the car's road: only a car on the road it names has one
+            own.add(misnamed.isEmpty() ? road : null);
             if (network.overlapsJunction(body) || network.isInJunctionZone(car.centre().x(), car.centre().y())) {
                 v.add(new Violation(Element.PARKED_CAR, car.id(), "parked car " + car.id()
                         + " is in a junction square, or centred in an approach or exit zone"));
             }
+        }
+        for (int a = 0; a < cars.size(); a++) {
+            ParkedCar car = cars.get(a);
             for (int b = a + 1; b < cars.size(); b++) {
                 ParkedCar other = cars.get(b);
-                if (body.overlaps(other.footprint())) {
+                if (car.footprint().overlaps(other.footprint())) {
                     v.add(new Violation(Element.PARKED_CAR, other.id(), "parked cars " + car.id() + " and "
                             + other.id() + " overlap"));
-                } else if (car.roadId() >= 0 && car.roadId() < layout.roads().size()
-                        && Placement.tooNear(layout.roads().get(car.roadId()), car, other)) {
+                } else if (own.get(a) != null && own.get(b) != null && Placement.tooNear(own.get(a), car, other)) {
                     // the generator's spacing: staggered nearer across a road, they block it for good
                     v.add(new Violation(Element.PARKED_CAR, other.id(), "parked cars " + car.id() + " and " + other.id()
                             + " stand nearer along their road than the generator spaces them"));
                 }
             }
         }
+    }
+
+    /**
+     * The road a point stands on when it is not the road {@code roadId} names; empty when the named road
+     * holds it, or when no road does (that is a rule of its own).
+     */
+    private static Optional<Road> misnamedRoad(Layout layout, RoadNetwork network, int roadId, Vec2 p) {
+        boolean named = roadId >= 0 && roadId < layout.roads().size() && layout.roads().get(roadId).contains(p.x(), p.y());
+        return named ? Optional.empty() : Optional.ofNullable(network.roadAt(p.x(), p.y()));
+    }
+
+    private static String at(Vec2 p) {
+        return "(" + p.x() + ", " + p.y() + ")";
+    }
+
+    private static String armsOf(Junction j) {
+        return "N " + j.armNorth() + ", E " + j.armEast() + ", S " + j.armSouth() + ", W " + j.armWest();
     }
 
     private static void checkStart(List<Violation> v, Element element, int index, String name, StartPose pose,

@@ -28,13 +28,18 @@ public sealed interface SituationEdit {
     /** A short name, e.g. {@code move-target:+5.00}. */
     String text();
 
-    /** The Target moved {@code by} metres along its road (positive: towards the road's end). */
+    /**
+     * The Target moved {@code by} metres along the line of its road (positive: towards the road's end);
+     * carried past the end onto another road, it takes that road's id.
+     */
     record MoveTarget(double by) implements SituationEdit {
         @Override
         public Optional<WorldMap> edit(WorldMap map) {
             Layout l = map.layout();
-            return l.target().flatMap(t -> road(l, t.roadId()).map(road -> with(map,
-                    targeted(l, new Target(slide(road, t.position(), by), t.roadId())))));
+            return l.target().flatMap(t -> road(l, t.roadId()).map(road -> {
+                Vec2 p = slide(road, t.position(), by);
+                return with(map, targeted(l, new Target(p, roadIdAt(l, road, p))));
+            }));
         }
 
         @Override
@@ -122,7 +127,10 @@ public sealed interface SituationEdit {
         }
     }
 
-    /** Parked car {@code id} moved {@code by} metres along its road, at the same kerb. */
+    /**
+     * Parked car {@code id} moved {@code by} metres along the line of its road, at the same kerb; carried
+     * past the end onto another road, it takes that road's id.
+     */
     record MoveParkedCar(int id, double by) implements SituationEdit {
         @Override
         public Optional<WorldMap> edit(WorldMap map) {
@@ -135,7 +143,8 @@ public sealed interface SituationEdit {
                     if (road.isEmpty()) {
                         return Optional.empty();
                     }
-                    cars.set(i, new ParkedCar(c.id(), c.roadId(), slide(road.get(), c.centre(), by), c.axis()));
+                    Vec2 p = slide(road.get(), c.centre(), by);
+                    cars.set(i, new ParkedCar(c.id(), roadIdAt(l, road.get(), p), p, c.axis()));
                     return Optional.of(with(map, parked(l, cars)));
                 }
             }
@@ -254,6 +263,19 @@ public sealed interface SituationEdit {
     private static Vec2 slide(Road road, Vec2 p, double by) {
         Vec2 moved = road.point(road.along(p.x(), p.y()) + by, road.across(p.x(), p.y()));
         return new Vec2(Dimensions.rounded(moved.x()), Dimensions.rounded(moved.y()));
+    }
+
+    /**
+     * The id of the road under {@code p}, which was slid along {@code road}: that road while it holds the
+     * point, else the road the slide carried it onto (the world's rules refuse the id of a road that does
+     * not hold its element). Off every road it stays {@code road}'s, and the rules refuse the map.
+     */
+    private static int roadIdAt(Layout layout, Road road, Vec2 p) {
+        if (road.contains(p.x(), p.y())) {
+            return road.id();
+        }
+        Road there = RoadNetwork.of(layout).roadAt(p.x(), p.y());
+        return there != null ? there.id() : road.id();
     }
 
     private static Layout targeted(Layout l, Target target) {

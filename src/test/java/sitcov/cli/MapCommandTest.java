@@ -76,6 +76,27 @@ class MapCommandTest {
     }
 
     @Test
+    void aTargetNamingARoadItDoesNotStandOnIsRefusedByMapAndSimulateNamingTheFix() throws IOException {
+        sitcov.world.Target target = MapGenerator.generate(5).layout().target().orElseThrow();
+        int wrong = target.roadId() == 0 ? 1 : 0;
+        String text = SituationFile.format(MapGenerator.generate(5)).replace("\ntarget " + target.position().x() + " "
+                + target.position().y() + " " + target.roadId() + "\n", "\ntarget " + target.position().x() + " "
+                + target.position().y() + " " + wrong + "\n");
+        Path edited = folder.resolve("edited.situation");
+        Files.writeString(edited, text);
+
+        for (String command : new String[] {"map", "simulate"}) {
+            CliRunner result = CliRunner.run(command, "--load", edited.toString());
+
+            assertEquals(ExitCode.USAGE, result.exitCode(), result.err());
+            assertTrue(result.err().contains("edited.situation:") && result.err().contains("names road " + wrong
+                    + " but stands on road " + target.roadId() + ": set its ROAD_ID to " + target.roadId()), result.err());
+            assertFalse(result.err().contains("\tat "), result.err());
+        }
+        assertEquals(text, Files.readString(edited));
+    }
+
+    @Test
     void anOutputInAMissingFolderIsRefusedBeforeAnythingIsWritten() {
         Path png = folder.resolve("no-such-folder").resolve("map.png");
 

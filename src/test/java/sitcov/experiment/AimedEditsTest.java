@@ -11,6 +11,7 @@ import sitcov.coverage.Criterion;
 import sitcov.coverage.GridDefinition;
 import sitcov.geom.Vec2;
 import sitcov.world.Invariants;
+import sitcov.world.Layout;
 import sitcov.world.MapGenerator;
 import sitcov.world.SituationEdit;
 import sitcov.world.WorldMap;
@@ -90,6 +91,53 @@ class AimedEditsTest {
                 assertEquals(AimedEdits.random(map.layout(), a), AimedEdits.random(map.layout(), b));
             }
         }
+    }
+
+    @Test
+    void aLongWalkOfTheSearchsEditsKeepsEveryTargetAndParkedCarOnTheRoadItNames() {
+        // issue 26: fault-search wrote a situation whose Target stood on road 11 but named road 16, after a
+        // move along road 16 carried it past the road's end; every edit, before the world's rules are
+        // checked, must leave each element naming a road that holds it (or no road at all, which they refuse)
+        SplittableRandom choose = new SplittableRandom(26);
+        int edits = 0;
+        int applied = 0;
+        int renamed = 0;
+        for (long seed = 1; seed <= 40; seed++) {
+            WorldMap map = MapGenerator.generate(seed);
+            if (!map.layout().isRunnable()) {
+                continue;
+            }
+            for (int step = 0; step < 60; step++) {
+                WorldMap parent = map;
+                SituationEdit edit = choose.nextBoolean() ? AimedEdits.random(map.layout(), choose)
+                        : AimedEdits.toward(map, GRID, choose.nextInt(3), 2, choose.nextBoolean() ? 1 : -1, choose);
+                Optional<WorldMap> raw = edit.edit(map);
+                edits++;
+                if (raw.isEmpty()) {
+                    continue;
+                }
+                Layout l = raw.get().layout();
+                l.target().ifPresent(t -> assertTrue(holds(l, t.roadId(), t.position()), edit.text() + " on map " + parent.seed()));
+                l.parkedCars().forEach(c -> assertTrue(holds(l, c.roadId(), c.centre()), edit.text() + " on map " + parent.seed()));
+                if (edit instanceof SituationEdit.MoveTarget && l.target().get().roadId() != map.layout().target().get().roadId()) {
+                    renamed++;
+                }
+                Optional<WorldMap> kept = edit.apply(map);
+                if (kept.isPresent() && kept.get().layout().isRunnable()) {
+                    assertEquals(List.of(), Invariants.violations(kept.get()), edit.text());
+                    applied++;
+                    map = kept.get();
+                }
+            }
+        }
+        assertTrue(edits >= 2000 && applied * 5 >= edits, applied + " of " + edits + " edits kept the rules (seed 26)");
+        assertTrue(renamed > 0, "no move of the Target left its road for another (seed 26)");
+    }
+
+    /** Whether road {@code id} holds the point, or no road does (off the road is a rule of its own). */
+    private static boolean holds(Layout layout, int id, Vec2 p) {
+        return layout.roads().get(id).contains(p.x(), p.y())
+                || layout.roads().stream().noneMatch(r -> r.contains(p.x(), p.y()));
     }
 
     private static double distance(WorldMap map) {

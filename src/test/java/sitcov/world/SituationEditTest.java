@@ -260,4 +260,44 @@ class SituationEditTest {
     private static WorldMap readBack(WorldMap map) throws SituationFormatException {
         return SituationFile.parse(List.of(SituationFile.format(map).split("\n")), "edited");
     }
+    @Test
+    void aTargetOrParkedCarSlidPastItsRoadsEndOntoAnotherRoadNamesTheRoadItLandsOn() {
+        // issue 26: a slide past a road's end, across a gap or a crossing road, can land on another road;
+        // the moved element kept its old road's id, which the car's route and the spacing rule then trusted
+        int targets = 0;
+        int cars = 0;
+        for (long seed = 1; seed <= 60; seed++) {
+            WorldMap map = MapGenerator.generate(seed);
+            Layout l = map.layout();
+            RoadNetwork network = RoadNetwork.of(l);
+            for (double by = -60; by <= 60; by += 0.5) {
+                if (l.target().isPresent()) {
+                    Target t = l.target().get();
+                    Road landed = anotherRoadAfterSlide(network, l.roads().get(t.roadId()), t.position(), by);
+                    if (landed != null) {
+                        targets++;
+                        Target moved = new SituationEdit.MoveTarget(by).edit(map).orElseThrow().layout().target().orElseThrow();
+                        assertTrue(landed.contains(moved.position().x(), moved.position().y()), "seed " + seed + " by " + by);
+                        assertEquals(landed.id(), moved.roadId(), "seed " + seed + " by " + by);
+                    }
+                }
+                for (ParkedCar c : l.parkedCars()) {
+                    Road landed = anotherRoadAfterSlide(network, l.roads().get(c.roadId()), c.centre(), by);
+                    if (landed != null) {
+                        cars++;
+                        ParkedCar moved = new SituationEdit.MoveParkedCar(c.id(), by).edit(map).orElseThrow()
+                                .layout().parkedCars().get(c.id());
+                        assertEquals(landed.id(), moved.roadId(), "seed " + seed + " car " + c.id() + " by " + by);
+                    }
+                }
+            }
+        }
+        assertTrue(targets > 0 && cars > 0, targets + " Target and " + cars + " parked-car slides leave their road for another");
+    }
+
+    /** The road {@code p} slid {@code by} along {@code road} lands on, out of junctions, if it left {@code road}; or null. */
+    private static Road anotherRoadAfterSlide(RoadNetwork network, Road road, Vec2 p, double by) {
+        Vec2 q = road.point(road.along(p.x(), p.y()) + by, road.across(p.x(), p.y()));
+        return road.contains(q.x(), q.y()) || network.isInJunction(q.x(), q.y()) ? null : network.roadAt(q.x(), q.y());
+    }
 }

@@ -227,9 +227,10 @@ final class VerdictText {
                     + " equivalence classes.", maps, UNIFORMITY_MIN_MAPS, UNIFORMITY_MIN_MAPS) + leftOut;
         }
         return String.format(Locale.ROOT, "Over the %d distinct maps run (a map run by several drivers counted once), for"
-                + " the %d faults found on some maps but not all (%s), the coverage cell explains on average %.1f %% of"
+                + " the %s found on some maps but not all (%s), the coverage cell explains on average %.1f %% of"
                 + " the variation in whether a map finds the fault, against %.1f %% when the same maps are dealt to cells"
-                + " at random; for %d of them more than chance (permutation p < %s, not adjusted).", maps, counted.size(),
+                + " at random; for %d of them more than chance (permutation p < %s, not adjusted).", maps,
+                counted.size() == 1 ? "fault" : counted.size() + " faults",
                 ids(counted), 100 * explained / counted.size(), 100 * chance / counted.size(), beyond, plain(ALPHA))
                 + leftOut;
     }

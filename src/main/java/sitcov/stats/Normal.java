@@ -7,8 +7,8 @@ package sitcov.stats;
  *
  * <p>{@link #cdf} is W. J. Cody's rational Chebyshev approximation (Cody 1969, "Rational Chebyshev
  * approximations for the error function", Mathematics of Computation 23:631; routine ANORM of
- * SPECFUN, ACM TOMS Algorithm 715, 1993), the same one R's {@code pnorm} uses: near double precision,
- * and the lower tail is computed directly, so Φ(−10) ≈ 7.6e−24 keeps its relative accuracy instead
+ * the special-function package of ACM TOMS Algorithm 715, 1993), the same one R's {@code pnorm}
+ * uses: near double precision, and the lower tail is computed directly, so Φ(−10) ≈ 7.6e−24 keeps its relative accuracy instead
  * of vanishing in {@code 1 − Φ(10)}.
  *
  * <p>{@link #quantile} is P. J. Acklam's rational approximation (Acklam 2003, "An algorithm for

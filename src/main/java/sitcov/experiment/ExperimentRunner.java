@@ -23,7 +23,7 @@ import sitcov.faults.Fault;
  */
 public final class ExperimentRunner {
     private final ExperimentConfig config;
-    private final Drivers drivers;
+    private final DriverFactory drivers;
     private final Shard shard;
     private final Journal journal;
     private final int threads;
@@ -32,7 +32,7 @@ public final class ExperimentRunner {
     private final List<Fault> faults;
     private volatile boolean halted;
 
-    public ExperimentRunner(ExperimentConfig config, Drivers drivers, Shard shard, Journal journal, int threads,
+    public ExperimentRunner(ExperimentConfig config, DriverFactory drivers, Shard shard, Journal journal, int threads,
                             LongSupplier nanoClock, List<ExperimentListener> listeners) {
         for (String d : config.drivers()) {
             drivers.create(d);

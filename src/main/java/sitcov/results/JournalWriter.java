@@ -48,8 +48,16 @@ public final class JournalWriter implements ExperimentListener, AutoCloseable {
                 if (m.run().map() instanceof MapId.Situation s) {
                     Path file = ResultsFolder.situation(folder, s.name());
                     if (m.builtSituation().isPresent()) {
+                        String text = SituationFile.format(m.builtSituation().get());
+                        // a map judged again on resume rewrites its own file; another map's is never replaced
+                        if (Files.exists(file) && !Files.readString(file, StandardCharsets.UTF_8).equals(text)) {
+                            throw new IllegalStateException(file + " holds another situation of that name, from an"
+                                    + " earlier map of this experiment; driver " + m.run().driver() + " in replication "
+                                    + m.run().replication() + " may not replace it: a built situation's name must be"
+                                    + " unique in the experiment (name it by driver and replication)");
+                        }
                         Files.createDirectories(file.getParent());
-                        OutputFile.writeString(file, SituationFile.format(m.builtSituation().get()));
+                        OutputFile.writeString(file, text);
                     }
                     situationCheck = JournalCheck.crc(Files.readAllBytes(file));
                 }

@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import sitcov.drivers.Drivers;
 
 /**
  * A listener that keeps an experiment's results in memory, for experiments run from code (and
@@ -47,7 +46,7 @@ public final class ResultsCollector implements ExperimentListener {
     }
 
     /** Runs {@code config} whole on {@code threads} threads and returns its results. */
-    public static List<ReplicationResult> run(ExperimentConfig config, Drivers drivers, int threads) {
+    public static List<ReplicationResult> run(ExperimentConfig config, DriverFactory drivers, int threads) {
         ResultsCollector collector = new ResultsCollector();
         new ExperimentRunner(config, drivers, Shard.WHOLE, Journal.empty(), threads, System::nanoTime, List.of(collector))
                 .run();

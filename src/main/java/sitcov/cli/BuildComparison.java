@@ -109,13 +109,13 @@ final class BuildComparison {
                 URLClassLoader loader = new URLClassLoader(new URL[] {classes.toUri().toURL()},
                         ClassLoader.getPlatformClassLoader());
                 Class<?> map = loader.loadClass("sitcov.world.WorldMap");
-                Class<?> length = loader.loadClass("sitcov.experiment.FaultyRuns");
+                Class<?> length = loader.loadClass("sitcov.judge.FaultyRuns");
                 List<Object> paper = new ArrayList<>((Set<Object>) loader.loadClass("sitcov.faults.FaultSet")
                         .getMethod("paper").invoke(null));
                 paper.sort(null);
                 return new Build(name, loader.loadClass("sitcov.world.MapGenerator").getMethod("generate", long.class),
-                        loader.loadClass("sitcov.experiment.Simulator").getMethod("run", map, long.class),
-                        loader.loadClass("sitcov.experiment.MapRunner").getMethod("judge", map, long.class, List.class, length),
+                        loader.loadClass("sitcov.judge.Simulator").getMethod("run", map, long.class),
+                        loader.loadClass("sitcov.judge.MapRunner").getMethod("judge", map, long.class, List.class, length),
                         paper, length.getField("UNTIL_VERDICT").get(null));
             } catch (MalformedURLException | ReflectiveOperationException | ClassCastException e) {
                 throw new UsageException("bench: --vs " + name + " is not a sitcov build this bench can drive (a folder of"

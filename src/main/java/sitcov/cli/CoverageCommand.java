@@ -9,8 +9,8 @@ import java.util.Optional;
 import java.util.Set;
 import sitcov.coverage.CoverageGrid;
 import sitcov.coverage.GridDefinition;
-import sitcov.report.CoverageHeatMap;
-import sitcov.report.IoReason;
+import sitcov.figures.CoverageHeatMap;
+import sitcov.results.IoReason;
 import sitcov.world.MapGenerator;
 
 /** {@code coverage --maps N}: how many cells of the situation grid N random maps reach, without simulating them. */

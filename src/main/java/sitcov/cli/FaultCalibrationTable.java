@@ -7,11 +7,11 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
-import sitcov.experiment.JudgedMap;
-import sitcov.experiment.FaultVerdict;
-import sitcov.experiment.Proportion;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
+import sitcov.judge.FaultVerdict;
+import sitcov.judge.JudgedMap;
+import sitcov.judge.Proportion;
 import sitcov.oracle.AccidentType;
 
 /** The table {@code faults --calibrate} prints: deterministic, no timings, one row per fault. */

@@ -3,9 +3,9 @@ package sitcov.cli;
 import java.io.PrintStream;
 import java.util.List;
 import java.util.Set;
-import sitcov.experiment.FaultCalibration;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
+import sitcov.judge.FaultCalibration;
 
 /**
  * {@code faults}: lists the catalogue; with {@code --calibrate --maps N}, runs every fault of a

@@ -6,7 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
-import sitcov.experiment.Drivers;
+import sitcov.drivers.Drivers;
 
 /**
  * The sitcov command line. {@link #main} is a thin shell over {@link #run}, which tests call

@@ -6,10 +6,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
-import sitcov.experiment.Summary;
-import sitcov.report.IoReason;
-import sitcov.report.Manifest;
+import sitcov.analysis.Summary;
 import sitcov.report.ShardMerger;
+import sitcov.results.IoReason;
+import sitcov.results.Manifest;
 
 /** {@code merge DIR... --out DIR}: the folders of shards 1/N … N/N into the folder the unsharded run would write. */
 final class MergeCommand implements Command {

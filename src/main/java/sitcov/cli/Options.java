@@ -12,7 +12,7 @@ import java.util.Optional;
 import java.util.Set;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
-import sitcov.report.OutputFile;
+import sitcov.results.OutputFile;
 
 /**
  * The options of one command: {@code --name value} (or {@code --name=value}) for valued options,

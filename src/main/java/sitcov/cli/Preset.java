@@ -10,12 +10,13 @@ import java.util.List;
 import java.util.Properties;
 import java.util.Set;
 import sitcov.coverage.GridDefinition;
+import sitcov.drivers.Drivers;
 import sitcov.experiment.AnalysisPlan;
 import sitcov.experiment.BudgetKind;
-import sitcov.experiment.Drivers;
 import sitcov.experiment.ExperimentConfig;
-import sitcov.experiment.FaultyRuns;
 import sitcov.faults.FaultSet;
+import sitcov.judge.FaultyRuns;
+import sitcov.results.IoReason;
 
 /**
  * An experiment preset: a properties file in {@code experiments/}, named by file or by name. A
@@ -60,7 +61,7 @@ record Preset(Path file, ExperimentConfig config) {
             throw new UsageException("run: " + file + " is not UTF-8 text; a preset is a properties file such as"
                     + " experiments/smoke.properties.");
         } catch (IOException e) {
-            throw new UsageException("run: cannot read the preset " + file + ": " + sitcov.report.IoReason.of(e, file) + ".");
+            throw new UsageException("run: cannot read the preset " + file + ": " + sitcov.results.IoReason.of(e, file) + ".");
         } catch (IllegalArgumentException e) {
             throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage() + ".");
         }
@@ -114,7 +115,7 @@ record Preset(Path file, ExperimentConfig config) {
             return new ExperimentConfig(name, seed, candidates, replications, faults, budget, grid, drivers, sweep,
                     candidateLimit, faultyRuns, analysis);
         } catch (IOException e) {
-            throw new UsageException("run: " + file + ": cannot read its grid: " + sitcov.report.IoReason.of(e) + ".");
+            throw new UsageException("run: " + file + ": cannot read its grid: " + sitcov.results.IoReason.of(e) + ".");
         } catch (NumberFormatException e) {
             throw new UsageException("run: " + file + ": " + field + "= needs a whole number, not '"
                     + p.getProperty(field, "").strip() + "'.");

@@ -6,9 +6,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
-import sitcov.experiment.Summary;
-import sitcov.report.Manifest;
+import sitcov.analysis.Summary;
 import sitcov.report.ResultsFinisher;
+import sitcov.results.Manifest;
+import sitcov.results.ResultsFolder;
 
 /**
  * {@code report DIR}: a complete results folder's tables, statistics, verdict and figures written
@@ -37,9 +38,9 @@ final class ReportCommand implements Command {
             throw new UsageException("report: name one results folder, e.g. 'report target/results/smoke-seed1'.");
         }
         Path folder = Path.of(options.positional().get(0));
-        if (!Files.isRegularFile(folder.resolve(sitcov.report.ResultsFolder.MANIFEST))) {
+        if (!Files.isRegularFile(folder.resolve(sitcov.results.ResultsFolder.MANIFEST))) {
             throw new UsageException("report: " + Options.shown(folder) + " is not a results folder (it has no "
-                    + sitcov.report.ResultsFolder.MANIFEST + "); name the folder 'run' wrote.");
+                    + sitcov.results.ResultsFolder.MANIFEST + "); name the folder 'run' wrote.");
         }
         try {
             Manifest manifest = Manifest.read(folder);

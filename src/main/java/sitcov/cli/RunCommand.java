@@ -11,16 +11,16 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.stream.Stream;
-import sitcov.experiment.Drivers;
+import sitcov.drivers.Drivers;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentRunner;
 import sitcov.experiment.Journal;
 import sitcov.experiment.Shard;
-import sitcov.report.FolderLock;
-import sitcov.report.IoReason;
-import sitcov.report.Manifest;
-import sitcov.report.ResultsFolder;
 import sitcov.report.ResultsRecorder;
+import sitcov.results.FolderLock;
+import sitcov.results.IoReason;
+import sitcov.results.Manifest;
+import sitcov.results.ResultsFolder;
 
 /**
  * {@code run PRESET}: an experiment into a fresh results folder, streamed as it goes;

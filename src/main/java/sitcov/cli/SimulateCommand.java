@@ -10,18 +10,19 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Collectors;
-import sitcov.experiment.RunObserver;
-import sitcov.experiment.RunRecord;
-import sitcov.experiment.Simulator;
 import sitcov.faults.Activation;
 import sitcov.faults.Fault;
+import sitcov.judge.RunObserver;
+import sitcov.judge.RunRecord;
+import sitcov.judge.Simulator;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.RunResult;
-import sitcov.report.RunGallery;
-import sitcov.report.RunRenderer;
-import sitcov.report.TraceWriter;
-import sitcov.report.TrajectoryRecorder;
+import sitcov.render.RunGallery;
+import sitcov.render.RunRenderer;
+import sitcov.render.TraceWriter;
+import sitcov.render.TrajectoryRecorder;
+import sitcov.results.IoReason;
 import sitcov.world.MapGenerator;
 import sitcov.world.SituationFile;
 import sitcov.world.WorldMap;
@@ -97,7 +98,7 @@ final class SimulateCommand implements Command {
             activations = record.activations();
         } catch (IOException | UncheckedIOException e) {
             err.println("sitcov: simulate: could not write the trace " + trace.orElse(null) + ": "
-                    + sitcov.report.IoReason.of(e instanceof UncheckedIOException u ? u.getCause() : (IOException) e,
+                    + sitcov.results.IoReason.of(e instanceof UncheckedIOException u ? u.getCause() : (IOException) e,
                     trace.orElse(null)) + ".");
             return ExitCode.FAILURE;
         }
@@ -115,7 +116,7 @@ final class SimulateCommand implements Command {
                 RunRenderer renderer = new RunRenderer(PIXELS_PER_METRE);
                 renderer.writePng(renderer.render(map, recorder, result), png.get());
             } catch (IOException e) {
-                err.println("sitcov: simulate: could not write " + png.get() + ": " + sitcov.report.IoReason.of(e, png.get()) + ".");
+                err.println("sitcov: simulate: could not write " + png.get() + ": " + sitcov.results.IoReason.of(e, png.get()) + ".");
                 return ExitCode.FAILURE;
             }
             out.println("Run drawn to " + png.get());

@@ -2,6 +2,7 @@ package sitcov.cli;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import sitcov.results.IoReason;
 import sitcov.world.SituationFile;
 import sitcov.world.SituationFormatException;
 import sitcov.world.WorldMap;
@@ -17,7 +18,7 @@ final class Situations {
         } catch (SituationFormatException e) {
             throw new UsageException(command + ": " + e.getMessage());
         } catch (IOException e) {
-            throw new UsageException(command + ": cannot read " + file + ": " + sitcov.report.IoReason.of(e, file) + ".");
+            throw new UsageException(command + ": cannot read " + file + ": " + sitcov.results.IoReason.of(e, file) + ".");
         }
     }
 

@@ -3,9 +3,9 @@ package sitcov.cli;
 import java.io.PrintStream;
 import java.util.List;
 import java.util.Locale;
+import sitcov.analysis.Summary;
+import sitcov.analysis.Sweep;
 import sitcov.experiment.ExperimentConfig;
-import sitcov.experiment.Summary;
-import sitcov.experiment.Sweep;
 
 /** The table printed at the end of {@code run} and {@code merge}: the means of the {@link Summary}. */
 final class SummaryTable {

@@ -4,7 +4,7 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import sitcov.report.ResultsFolder;
+import sitcov.results.ResultsFolder;
 
 /** Prints the verdict a finished comparison kept in its results folder (a sweep has none). */
 final class VerdictPrinter {

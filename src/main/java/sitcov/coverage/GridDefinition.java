@@ -36,7 +36,10 @@ public record GridDefinition(List<Criterion> criteria, List<Bins> bins) {
         }
     }
 
-    /** The paper's 6×6×6 grid (reference §7.2), with a value outside every bin counted as invalid. */
+    /**
+     * The paper's 6×6×6 grid (README, "Situation coverage"; the same as experiments/paper-grid.txt), with a
+     * value outside every bin counted as invalid.
+     */
     public static GridDefinition paper() {
         double inf = Double.POSITIVE_INFINITY;
         return new GridDefinition(List.of(Criterion.TARGET_TO_OBSTACLE, Criterion.START_TO_TARGET,

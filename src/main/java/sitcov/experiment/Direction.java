@@ -19,7 +19,7 @@ public enum Direction {
     }
 
     /** The signed-rank test's alternative for differences taken as the first named driver minus the second ({@code asNamed}) or the reverse. */
-    Alternative alternative(boolean asNamed) {
+    public Alternative alternative(boolean asNamed) {
         return switch (this) {
             case TWO_SIDED -> Alternative.TWO_SIDED;
             case HIGHER -> asNamed ? Alternative.GREATER : Alternative.LESS;

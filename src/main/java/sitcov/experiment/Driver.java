@@ -5,7 +5,8 @@ package sitcov.experiment;
  * it spends. Each replication gets a fresh instance, so a driver may keep state; it must take
  * every random choice from the session, whose streams are seeded by the experiment.
  *
- * <p>To add one, implement this interface and register its name in {@link Drivers#standard()}.
+ * <p>To add one, implement this interface and register its name in
+ * {@code sitcov.drivers.Drivers.standard()}, which the engine reaches only as a {@link DriverFactory}.
  */
 @FunctionalInterface
 public interface Driver {

@@ -2,12 +2,15 @@ package sitcov.experiment;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
 import java.util.function.Supplier;
 import java.util.random.RandomGenerator;
 import sitcov.coverage.CoverageGrid;
 import sitcov.coverage.GridDefinition;
+import sitcov.judge.FaultOutcome;
+import sitcov.judge.JudgedMap;
+import sitcov.judge.MapRunner;
+import sitcov.judge.RunSummary;
 import sitcov.world.Layout;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
@@ -31,7 +34,7 @@ public final class DriverSession {
     private final List<Journal.Entry> replay;
     private final Optional<Journal.Finished> finishedBefore;
     private final Driver self;
-    private final Map<MapId, SharedMap> shared;
+    private final SharedMaps shared;
     /** The lead this session feeds with its ticks as it spends them, when it is the replication's first driver. */
     private final Lead leading;
     /** Wall time charged for maps another driver of the replication judged: as if this driver had run them. */
@@ -46,7 +49,7 @@ public final class DriverSession {
     private int liveMaps;
 
     DriverSession(ExperimentRunner host, PlannedReplication replication, String driver, int driverIndex, Budget budget,
-                  Journal journal, Driver self, Map<MapId, SharedMap> shared, Lead leading) {
+                  Journal journal, Driver self, SharedMaps shared, Lead leading) {
         this.shared = shared;
         this.leading = leading;
         this.host = host;
@@ -141,8 +144,13 @@ public final class DriverSession {
                 () -> MapGenerator.withMovingCars(c.layout()), Optional.empty());
     }
 
-    /** Runs a situation the driver built; {@code name} must be unique in the experiment (it names its file). */
+    /**
+     * Runs a situation the driver built; {@code name} must be unique in the experiment (it names its file).
+     *
+     * @throws IllegalStateException when the name was run before in this replication, by any driver
+     */
     public MapRun run(String name, WorldMap situation) {
+        shared.claim(name, driver);
         double[] values = grid.values(situation.layout());
         return run(new MapId.Situation(name), -1, values, grid.cellOf(values), () -> situation, Optional.of(situation));
     }
@@ -152,6 +160,7 @@ public final class DriverSession {
      * search pays per candidate like a filter and every map's candidate is its place in the stream).
      */
     public MapRun run(String name, WorldMap situation, Candidate spent) {
+        shared.claim(name, driver);
         double[] values = grid.values(situation.layout());
         return run(new MapId.Situation(name), spent.index(), values, grid.cellOf(values), () -> situation,
                 Optional.of(situation));
@@ -180,7 +189,7 @@ public final class DriverSession {
         }
         long start = host.nanoTime();
         long internal = SeedPlan.internalSeed(host.config().masterSeed(), id);
-        SharedMap judgedBefore = shared.get(id);
+        SharedMaps.Judged judgedBefore = shared.judged(id);
         WorldMap world;
         JudgedMap judged;
         if (judgedBefore != null) {
@@ -203,7 +212,7 @@ public final class DriverSession {
             creditedNanos += judgedBefore.nanos() - nanos;
             nanos = judgedBefore.nanos();
         } else {
-            shared.putIfAbsent(id, new SharedMap(world, judged, nanos));
+            shared.keep(id, new SharedMaps.Judged(world, judged, nanos));
         }
         liveMapNanos += nanos;
         liveMaps++;
@@ -226,10 +235,6 @@ public final class DriverSession {
             return mapsRun == 0 ? 0 : replay.get(mapsRun - 1).driverNanos();
         }
         return elapsedOffset + host.nanoTime() - liveSince + creditedNanos;
-    }
-
-    /** A map one driver of a replication judged, kept for the others, with the wall time it took. */
-    record SharedMap(WorldMap world, JudgedMap judged, long nanos) {
     }
 
     /** How much of its budget the driver has spent, 0..1. */

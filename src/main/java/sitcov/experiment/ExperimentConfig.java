@@ -7,6 +7,7 @@ import java.util.Objects;
 import java.util.Set;
 import sitcov.coverage.GridDefinition;
 import sitcov.faults.Fault;
+import sitcov.judge.FaultyRuns;
 
 /**
  * One experiment. A comparison: per replication, the first of {@code drivers} draws

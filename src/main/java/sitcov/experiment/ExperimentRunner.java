@@ -3,8 +3,6 @@ package sitcov.experiment;
 import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -23,7 +21,7 @@ import sitcov.faults.Fault;
  */
 public final class ExperimentRunner {
     private final ExperimentConfig config;
-    private final Drivers drivers;
+    private final DriverFactory drivers;
     private final Shard shard;
     private final Journal journal;
     private final int threads;
@@ -32,7 +30,7 @@ public final class ExperimentRunner {
     private final List<Fault> faults;
     private volatile boolean halted;
 
-    public ExperimentRunner(ExperimentConfig config, Drivers drivers, Shard shard, Journal journal, int threads,
+    public ExperimentRunner(ExperimentConfig config, DriverFactory drivers, Shard shard, Journal journal, int threads,
                             LongSupplier nanoClock, List<ExperimentListener> listeners) {
         for (String d : config.drivers()) {
             drivers.create(d);
@@ -75,7 +73,7 @@ public final class ExperimentRunner {
             for (PlannedReplication p : todo) {
                 Lead lead = new Lead();
                 // drivers of a replication read the same candidates: a map two of them run is judged once
-                Map<MapId, DriverSession.SharedMap> shared = new ConcurrentHashMap<>();
+                SharedMaps shared = new SharedMaps(p.index());
                 AtomicInteger driversLeft = new AtomicInteger(drivers);
                 if (beside) {
                     for (int d = 0; d < drivers; d++) {
@@ -123,7 +121,7 @@ public final class ExperimentRunner {
     }
 
     /** One driver's share of a replication; the later drivers run beside the first, spending what it spends. */
-    private void runDriver(PlannedReplication p, int d, Lead lead, Map<MapId, DriverSession.SharedMap> shared,
+    private void runDriver(PlannedReplication p, int d, Lead lead, SharedMaps shared,
                            AtomicInteger driversLeft) {
         String name = config.drivers().get(d);
         Budget budget = d == 0 ? Budget.candidates(p.candidates()) : Budget.after(config.budget(), lead, config.candidateLimit());

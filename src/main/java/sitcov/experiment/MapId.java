@@ -18,7 +18,8 @@ public sealed interface MapId {
 
     /**
      * A situation a driver built; {@code name} is unique within an experiment and names its file
-     * {@code situations/NAME.situation} in the results folder.
+     * {@code situations/NAME.situation} in the results folder (a name run twice in a replication is
+     * refused by {@link SharedMaps}, a file holding another situation by the journal's writer).
      */
     record Situation(String name) implements MapId {
         public Situation {

@@ -1,6 +1,8 @@
 package sitcov.experiment;
 
 import java.util.List;
+import sitcov.judge.FaultOutcome;
+import sitcov.judge.RunSummary;
 
 /**
  * One map a driver ran in one replication, as the results folder keeps it: which driver, its

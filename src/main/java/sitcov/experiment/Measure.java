@@ -3,7 +3,8 @@ package sitcov.experiment;
 /**
  * The measures two drivers are compared on, each a value per driver and replication, with the
  * margin within which two drivers count as equivalent unless a preset declares its own
- * ({@code margin_KEY=}): a difference smaller than the margin is too small to matter.
+ * ({@code margin_KEY=}): a difference smaller than the margin is too small to matter. Named here,
+ * where a preset's {@link AnalysisPlan} picks them; computed in {@code sitcov.analysis.Metrics}.
  */
 public enum Measure {
     CELLS_COVERED("cells_covered", "cells covered", "cells", 5),
@@ -41,18 +42,6 @@ public enum Measure {
 
     public double defaultMargin() {
         return defaultMargin;
-    }
-
-    /** This measure of one driver's maps ({@code m}), with {@code area} the area under its discovery curve. */
-    double of(Metrics m, double area) {
-        return switch (this) {
-            case CELLS_COVERED -> m.cells();
-            case MAPS_RUN -> m.maps();
-            case FAULTS_FOUND -> m.faultsFound();
-            case AVG_MAP_FAULT -> m.avgMapFault();
-            case PROP_MAP_ALL_FAULT -> m.propMapAllFault();
-            case DISCOVERY_AREA -> area;
-        };
     }
 
     public static Measure ofKey(String key) {

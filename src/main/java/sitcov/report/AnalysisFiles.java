@@ -6,14 +6,19 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import sitcov.experiment.Comparison;
-import sitcov.experiment.Discovery;
+import sitcov.analysis.Comparison;
+import sitcov.analysis.Discovery;
+import sitcov.analysis.SituationFaults;
+import sitcov.analysis.Summary;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ReplicationResult;
 import sitcov.experiment.SeedPlan;
-import sitcov.experiment.SituationFaults;
-import sitcov.experiment.Summary;
+import sitcov.figures.StatsFigures;
+import sitcov.results.OutputFile;
+import sitcov.results.ResultsFolder;
+import sitcov.results.StatsCsv;
+import sitcov.verdict.VerdictText;
 
 /**
  * The statistics of a comparison, written beside its tables: {@code stats.csv}, {@code verdict.txt},

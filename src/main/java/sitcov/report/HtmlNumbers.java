@@ -1,6 +1,7 @@
 package sitcov.report;
 
 import java.util.Locale;
+import sitcov.verdict.VerdictText;
 
 /** The numbers of a CSV file written for people: counts whole, shares in per cent, p-values short, a dash for none. */
 final class HtmlNumbers {

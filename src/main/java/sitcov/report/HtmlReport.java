@@ -6,6 +6,10 @@ import java.nio.file.Path;
 import java.util.List;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapRun;
+import sitcov.results.CsvTable;
+import sitcov.results.Manifest;
+import sitcov.results.ResultsFolder;
+import sitcov.verdict.PairSummary;
 
 /**
  * {@code report.html}: one self-contained page per results folder (its own CSS, no script, nothing

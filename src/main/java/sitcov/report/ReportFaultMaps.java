@@ -7,6 +7,8 @@ import java.util.List;
 import java.util.Locale;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapRun;
+import sitcov.render.ReplayGallery;
+import sitcov.results.ResultsFolder;
 
 /**
  * For each fault, the first maps that found it, each with its row of runs.csv and a replay command
@@ -61,7 +63,7 @@ final class ReportFaultMaps {
             }
             Path picture = ReplayGallery.picture(folder, faults.get(f));
             if (Files.isRegularFile(picture)) {
-                String name = ReplayGallery.FOLDER + "/" + picture.getFileName();
+                String name = ResultsFolder.REPLAYS + "/" + picture.getFileName();
                 h.append("<p>The first of them, replayed (left without the fault, right with it):<br><a href=\"").append(name)
                         .append("\"><img src=\"").append(name).append("\" alt=\"replay of the first map that found fault ")
                         .append(faults.get(f).id()).append("\"></a></p>");

@@ -3,6 +3,9 @@ package sitcov.report;
 import java.util.ArrayList;
 import java.util.List;
 import sitcov.report.HtmlTable.Column;
+import sitcov.results.CsvTable;
+import sitcov.results.ResultsFolder;
+import sitcov.verdict.VerdictText;
 
 /**
  * Table 2 (each driver's share of maps finding each fault, and the differences between drivers) and

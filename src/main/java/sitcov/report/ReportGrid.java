@@ -9,6 +9,7 @@ import java.util.Set;
 import sitcov.coverage.Bins;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.MapRun;
+import sitcov.results.ResultsFolder;
 
 /**
  * The coverage grid in the report: for each driver, slices of a three-criteria grid along its first

@@ -5,7 +5,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import sitcov.report.HtmlTable.Column;
+import sitcov.results.CsvTable;
+import sitcov.results.ResultsFolder;
 import sitcov.stats.Descriptive;
+import sitcov.verdict.VerdictText;
 
 /**
  * The paper's measures in the report: per driver and notion their mean over replications with the

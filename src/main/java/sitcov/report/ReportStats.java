@@ -4,10 +4,13 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import sitcov.experiment.Finding;
+import sitcov.analysis.Finding;
 import sitcov.experiment.Measure;
 import sitcov.faults.Fault;
 import sitcov.report.HtmlTable.Column;
+import sitcov.results.CsvTable;
+import sitcov.results.ResultsFolder;
+import sitcov.verdict.VerdictText;
 
 /**
  * stats.csv in the report: for each pair of drivers a table of the measures and one of the faults,

@@ -6,13 +6,22 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import sitcov.analysis.Summary;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.Journal;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.PlannedReplication;
 import sitcov.experiment.ReplicationResult;
-import sitcov.experiment.Summary;
+import sitcov.figures.ExperimentFigures;
+import sitcov.figures.SweepReport;
+import sitcov.render.ReplayGallery;
+import sitcov.results.FolderLock;
+import sitcov.results.JournalFiles;
+import sitcov.results.Manifest;
+import sitcov.results.OutputFile;
+import sitcov.results.ResultsFolder;
+import sitcov.results.ResultsTables;
 
 /**
  * Completes a results folder from its journal: the journal files in canonical order, then every

@@ -9,10 +9,20 @@ import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 import java.util.function.LongSupplier;
+import sitcov.analysis.Summary;
 import sitcov.experiment.ExperimentEvent;
 import sitcov.experiment.ExperimentListener;
 import sitcov.experiment.Journal;
-import sitcov.experiment.Summary;
+import sitcov.results.DriversCsv;
+import sitcov.results.FolderLock;
+import sitcov.results.JournalCheck;
+import sitcov.results.JournalFiles;
+import sitcov.results.JournalWriter;
+import sitcov.results.Manifest;
+import sitcov.results.OutputFile;
+import sitcov.results.ResultsFolder;
+import sitcov.results.RunsCsv;
+import sitcov.results.TimingsCsv;
 
 /**
  * The listener that keeps an experiment's results folder: it journals every judged map as it

@@ -9,9 +9,14 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.stream.Stream;
+import sitcov.analysis.Summary;
 import sitcov.experiment.DriverSpend;
 import sitcov.experiment.Journal;
-import sitcov.experiment.Summary;
+import sitcov.experiment.Shard;
+import sitcov.results.FolderLock;
+import sitcov.results.JournalFiles;
+import sitcov.results.Manifest;
+import sitcov.results.ResultsFolder;
 
 /**
  * Combines the folders of shards 1/N … N/N of one experiment into the folder the unsharded run

@@ -1,7 +1,8 @@
 package sitcov.vehicles;
 
 /**
- * What the road-marking camera can see (reference §3.2a): the arc to the left and right of the
+ * What the road-marking camera can see (README, "The car under test, the traffic and the oracle"):
+ * the arc to the left and right of the
  * lane direction (the kerb-side edge line is looked for on the left, the centre line on the
  * right), its range, and how finely it samples angle and distance. These are what faults 8–13 degrade.
  *

@@ -1,6 +1,6 @@
 package sitcov.vehicles;
 
-/** Speeds and turns every car shares (reference §1.2), per tick of 0.2 s. */
+/** Speeds and turns every car shares (README, "The car under test, the traffic and the oracle"), per tick of 0.2 s. */
 public final class Dynamics {
     /** 2.5 m per tick: 12.5 m/s, 45 km/h. */
     public static final double MAX_SPEED = 2.5;
@@ -30,7 +30,7 @@ public final class Dynamics {
     }
 
     /**
-     * The distance a car plans to need to stop from {@code speed} (reference §3.3): the current
+     * The distance a car plans to need to stop from {@code speed} (the original's rule): the current
      * speed counted once more than a braking car really travels — a tick of reaction — plus the
      * ticks of full braking: v + Σ (v − k·0.15625) over k = 0, 1, … while the term is positive.
      */

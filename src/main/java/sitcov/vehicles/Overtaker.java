@@ -6,7 +6,8 @@ import sitcov.geom.Bearing;
 import sitcov.geom.Compass;
 
 /**
- * Passing parked cars (reference §3.7): seeing a parked car ahead in its lane, the car pulls out
+ * Passing parked cars (README, "The car under test, the traffic and the oracle"): seeing a parked
+ * car ahead in its lane, the car pulls out
  * only if the oncoming lane is predicted clear for the whole manoeuvre, otherwise it waits
  * behind. It passes the whole row it can see — the LIDAR cannot see through the first car, so the
  * row is re-examined once pulled out — and pulls back in before anything parked on the other side.

@@ -1,6 +1,6 @@
 package sitcov.vehicles;
 
-/** Where the autonomous car is in passing parked cars (reference §3.7). */
+/** Where the autonomous car is in passing parked cars (README, "The car under test, the traffic and the oracle"). */
 public enum OvertakingStage {
     NOT_OVERTAKING,
     /** Behind a parked car, waiting for the oncoming lane to clear. */

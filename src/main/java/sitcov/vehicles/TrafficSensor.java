@@ -4,7 +4,8 @@ import sitcov.geom.Bearing;
 import sitcov.geom.Compass;
 
 /**
- * The moving-vehicle sensor (a radar, reference §3.2c): it sees vehicles up to 100 m away within
+ * The moving-vehicle sensor (a radar; README, "The car under test, the traffic and the oracle"):
+ * it sees vehicles up to 100 m away within
  * a forward field (45°, or 180° within 25 m), measures where they are and how fast they move, and
  * sorts them into those in the car's own path and those in the oncoming lane. Results are kept
  * in fields until the next scan; nothing is allocated.

@@ -13,12 +13,12 @@ import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.Locale;
-import sitcov.experiment.LiveRun;
 import sitcov.geom.Bearing;
+import sitcov.judge.LiveRun;
 import sitcov.oracle.Accident;
-import sitcov.report.MapRenderer;
-import sitcov.report.MapShapes;
-import sitcov.report.OutcomeText;
+import sitcov.render.MapRenderer;
+import sitcov.render.MapShapes;
+import sitcov.render.OutcomeText;
 import sitcov.vehicles.AutonomousCar;
 import sitcov.vehicles.Vehicle;
 

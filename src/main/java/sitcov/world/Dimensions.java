@@ -1,6 +1,9 @@
 package sitcov.world;
 
-/** The world's fixed measures, in metres (reference §1, Appendix B). */
+/**
+ * The world's fixed measures, in metres (README, "Maps and situation files", and "The car under test, the
+ * traffic and the oracle").
+ */
 public final class Dimensions {
     public static final double WORLD_WIDTH = 200;
     public static final double WORLD_HEIGHT = 100;

@@ -16,7 +16,8 @@ import sitcov.geom.Box;
 import sitcov.geom.Vec2;
 
 /**
- * Places what stands on the roads (reference §2.3 steps 5–8): parked cars, the Target, the
+ * Places what stands on the roads (the generator's steps after the road tree;
+ * README, "Maps and situation files"): parked cars, the Target, the
  * autonomous car's start and the moving cars, each by bounded tries of uniform points. A point
  * found on the last try counts (the original's off-by-one is not kept).
  */

@@ -16,7 +16,8 @@ import sitcov.geom.Rect;
 import sitcov.geom.Vec2;
 
 /**
- * Grows the road tree of a map (reference §2.3 steps 1–4): a first road, then T-junctions whose
+ * Grows the road tree of a map (the generator's first steps;
+ * README, "Maps and situation files"): a first road, then T-junctions whose
  * branch roads touch only their parent, then a dead end at every free road end. All draws come
  * from the one stream it is given.
  */

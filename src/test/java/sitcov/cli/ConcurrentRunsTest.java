@@ -14,7 +14,7 @@ import java.util.concurrent.CyclicBarrier;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import sitcov.report.ResultsFolder;
+import sitcov.results.ResultsFolder;
 
 class ConcurrentRunsTest {
     @TempDir

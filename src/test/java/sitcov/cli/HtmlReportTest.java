@@ -12,7 +12,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import sitcov.report.ResultsFolder;
+import sitcov.results.ResultsFolder;
 
 /** The report.html of a results folder, read as a browser would: what it links to must be there. */
 class HtmlReportTest {

@@ -9,7 +9,7 @@ import java.util.List;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import sitcov.report.ResultsFolder;
+import sitcov.results.ResultsFolder;
 
 class MergeCommandTest {
     @TempDir

@@ -9,9 +9,9 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.drivers.Drivers;
 import sitcov.experiment.BudgetKind;
-import sitcov.experiment.Drivers;
-import sitcov.experiment.FaultyRuns;
+import sitcov.judge.FaultyRuns;
 
 class PresetTest {
     @Test

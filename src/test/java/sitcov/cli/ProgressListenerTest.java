@@ -16,10 +16,10 @@ import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentEvent;
 import sitcov.experiment.MapId;
 import sitcov.experiment.MapRun;
-import sitcov.experiment.RunSummary;
 import sitcov.experiment.Shard;
 import sitcov.experiment.StopReason;
 import sitcov.faults.FaultSet;
+import sitcov.judge.RunSummary;
 import sitcov.oracle.Outcome;
 
 class ProgressListenerTest {

@@ -13,12 +13,12 @@ import java.util.function.UnaryOperator;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import sitcov.experiment.Simulator;
+import sitcov.judge.Simulator;
 import sitcov.oracle.Outcome;
 import sitcov.oracle.RunResult;
-import sitcov.report.GifFile;
-import sitcov.report.ResultsFolder;
-import sitcov.report.SignedEdits;
+import sitcov.render.GifFile;
+import sitcov.results.ResultsFolder;
+import sitcov.results.SignedEdits;
 import sitcov.world.MapGenerator;
 
 class ReplayCommandTest {

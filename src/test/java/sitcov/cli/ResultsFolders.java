@@ -9,7 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
-import sitcov.report.ResultsFolder;
+import sitcov.results.ResultsFolder;
 
 /** Fixtures for tests of results folders: the tiny preset's reference run, and byte-for-byte comparison. */
 final class ResultsFolders {

@@ -13,14 +13,14 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import sitcov.experiment.Drivers;
+import sitcov.drivers.Drivers;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentEvent;
 import sitcov.experiment.ExperimentRunner;
 import sitcov.experiment.Shard;
-import sitcov.report.Manifest;
-import sitcov.report.ResultsFolder;
 import sitcov.report.ResultsRecorder;
+import sitcov.results.Manifest;
+import sitcov.results.ResultsFolder;
 
 class ResumeCommandTest {
     @TempDir

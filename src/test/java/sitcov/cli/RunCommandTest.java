@@ -18,9 +18,9 @@ import java.util.Set;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.drivers.Drivers;
 import sitcov.experiment.Candidate;
-import sitcov.experiment.Drivers;
-import sitcov.report.ResultsFolder;
+import sitcov.results.ResultsFolder;
 
 class RunCommandTest {
     @TempDir

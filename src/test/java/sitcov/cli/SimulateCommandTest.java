@@ -9,7 +9,8 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import sitcov.report.TraceWriter;
+import sitcov.judge.Simulator;
+import sitcov.render.TraceWriter;
 
 class SimulateCommandTest {
     @TempDir
@@ -152,7 +153,7 @@ class SimulateCommandTest {
         assertEquals(0, r.exitCode(), r.err());
         List<String> expected = new java.util.ArrayList<>();
         for (long seed = 280; seed < 430; seed++) {
-            sitcov.oracle.RunResult run = sitcov.experiment.Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
+            sitcov.oracle.RunResult run = sitcov.judge.Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
             if (run.hasAccident() || run.outcome() == sitcov.oracle.Outcome.TIMEOUT) {
                 expected.add(Long.toString(seed));
             }

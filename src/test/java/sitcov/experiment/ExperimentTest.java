@@ -9,7 +9,9 @@ import java.util.Set;
 import java.util.random.RandomGenerator;
 import org.junit.jupiter.api.Test;
 import sitcov.coverage.GridDefinition;
+import sitcov.drivers.Drivers;
 import sitcov.faults.FaultSet;
+import sitcov.judge.FaultyRuns;
 
 class ExperimentTest {
     // small enough for the test suite; faults 14 and 19 keep the faulty runs short

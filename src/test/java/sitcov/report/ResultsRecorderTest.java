@@ -11,23 +11,28 @@ import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import sitcov.coverage.GridDefinition;
+import sitcov.drivers.Drivers;
 import sitcov.experiment.BudgetKind;
 import sitcov.experiment.Candidate;
-import sitcov.experiment.Drivers;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentEvent;
 import sitcov.experiment.ExperimentListener;
 import sitcov.experiment.ExperimentRunner;
-import sitcov.experiment.FaultyRuns;
 import sitcov.experiment.Journal;
 import sitcov.experiment.MapId;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.SeedPlan;
 import sitcov.experiment.Shard;
 import sitcov.faults.FaultSet;
+import sitcov.judge.FaultyRuns;
+import sitcov.results.FolderLock;
+import sitcov.results.JournalFiles;
+import sitcov.results.Manifest;
+import sitcov.results.ResultsFolder;
 import sitcov.world.MapGenerator;
 import sitcov.world.SituationFile;
 import sitcov.world.WorldMap;
@@ -116,6 +121,37 @@ class ResultsRecorderTest {
 
         Files.writeString(kept, text);
         ResultsFinisher.report(dir);
+    }
+
+    @Test
+    void aSituationNameReusedByAnotherReplicationIsRefusedBeforeItReplacesTheFirstOnesFile() throws Exception {
+        // a name without the replication in it: replication 1 builds "built-0" from another map than replication 0
+        Map<Integer, Long> builtFrom = new ConcurrentHashMap<>();
+        Drivers reusing = Drivers.standard().with("reusing", () -> session -> {
+            while (session.budgetLeft()) {
+                Candidate c = session.nextCandidate();
+                if (c.runnable()) {
+                    builtFrom.put(session.replication(), c.externalSeed());
+                    session.run("built-0", MapGenerator.generate(c.externalSeed()));
+                    return;
+                }
+            }
+        });
+        ExperimentConfig config = new ExperimentConfig("reused", 5, 6, 2, FaultSet.parse("19"), BudgetKind.TICKS,
+                GridDefinition.paper(), List.of("reusing"), List.of(), 6, FaultyRuns.UNTIL_VERDICT);
+        Path kept = ResultsFolder.situation(dir, "built-0");
+        ResultsRecorder recorder = ResultsRecorder.create(dir, new Manifest(config, "test", Shard.WHOLE, false, false),
+                Map.of(), System::nanoTime);
+        // one thread: replication 0 runs first and keeps its file
+        ExperimentRunner runner = new ExperimentRunner(config, reusing, Shard.WHOLE, recorder.journal(), 1,
+                System::nanoTime, List.of(recorder));
+        IllegalStateException e = assertThrows(IllegalStateException.class, runner::run);
+        recorder.close();
+
+        assertNotEquals(builtFrom.get(0), builtFrom.get(1), "the two replications built different maps");
+        assertTrue(e.getMessage().contains(kept + " holds another situation of that name, from an earlier map of this"
+                + " experiment; driver reusing in replication 1 may not replace it"), e.getMessage());
+        assertEquals(MapGenerator.generate(builtFrom.get(0)), SituationFile.read(kept));
     }
 
     @Test

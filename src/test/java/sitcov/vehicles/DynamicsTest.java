@@ -10,7 +10,7 @@ class DynamicsTest {
 
     @Test
     void theStoppingDistanceAtFullSpeedIsTheReferences() {
-        // reference §3.3: sd = v + Σ_{k=0,1,…} (v − k·0.15625) while the term is positive.
+        // the original's stopping distance: sd = v + Σ_{k=0,1,…} (v − k·0.15625) while the term is positive.
         // At v = 2.5 the terms are positive for k = 0..15 (2.5 / 0.15625 = 16):
         // Σ = 16·2.5 − 0.15625·(0 + 1 + … + 15) = 40 − 0.15625·120 = 40 − 18.75 = 21.25,
         // sd = 2.5 + 21.25 = 23.75

@@ -7,7 +7,7 @@ import java.awt.Dimension;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
-import sitcov.experiment.LiveRun;
+import sitcov.judge.LiveRun;
 import sitcov.world.MapGenerator;
 
 /** The window's size, worked out for a given screen without opening one. */

@@ -75,7 +75,7 @@ class MapGeneratorTest {
     }
 
     /**
-     * Means near the original's (reference §2.4, seeds 1..20 000). Tolerance ±10 %: our rules differ
+     * Means near those the original implementation measured (its seeds 1..20 000). Tolerance ±10 %: our rules differ
      * from the original's by a 1 m clearance between roads that are not parent and branch (fewer
      * branches fit), by keeping parked cars' whole bodies out of junction squares, and by its
      * off-by-one (a place found on the last try counts); we measure 9.8 T-junctions, 21.6

@@ -1,0 +1,32 @@
+package sitcov.judge;
+
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.Callable;
+import java.util.function.IntConsumer;
+import sitcov.faults.Fault;
+import sitcov.world.MapGenerator;
+
+/**
+ * Every fault of a set on maps {@code first .. first+maps-1} (internal seed = external seed): one
+ * fault-free run per map and one run per fault (stopped at its verdict), judged by the {@link MapRunner}. Maps run
+ * in parallel, results come back in map order, so the outcome does not depend on the thread count.
+ */
+public final class FaultCalibration {
+    private FaultCalibration() {
+    }
+
+    /** The judged maps, in map order; each map's verdicts in fault id order. */
+    public static List<JudgedMap> run(long first, int maps, Set<Fault> faults, int threads, IntConsumer progress) {
+        List<Fault> ordered = new ArrayList<>(faults.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(faults));
+        List<Callable<JudgedMap>> tasks = new ArrayList<>(maps);
+        for (int i = 0; i < maps; i++) {
+            long seed = first + i;
+            // every column of calibration is a verdict, which a faulty run has settled when it stops
+            tasks.add(() -> MapRunner.judge(MapGenerator.generate(seed), seed, ordered, FaultyRuns.UNTIL_VERDICT));
+        }
+        return InOrder.run(tasks, threads, progress, "fault calibration");
+    }
+}

@@ -1,0 +1,36 @@
+package sitcov.judge;
+
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
+import sitcov.faults.Fault;
+import sitcov.oracle.RunResult;
+import sitcov.world.WorldMap;
+
+/**
+ * The one place a map is judged: run fault-free, then once per fault (one fault at a time) with
+ * the same internal seed, each faulty run judged by the {@link DifferentialOracle} against the
+ * fault-free one. Experiments, fault calibration and the regression tests all come through here.
+ */
+public final class MapRunner {
+    private MapRunner() {
+    }
+
+    /** Judges every fault of {@code faults}, in the list's order, each faulty run driven to its end. */
+    public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults) {
+        return judge(map, internalSeed, faults, FaultyRuns.TO_END);
+    }
+
+    /** Judges every fault of {@code faults}, in the list's order, each faulty run as long as {@code length} says. */
+    public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length) {
+        RunResult faultFree = Simulator.run(map, internalSeed);
+        List<FaultVerdict> verdicts = new ArrayList<>(faults.size());
+        for (Fault fault : faults) {
+            RunRecord faulty = length == FaultyRuns.UNTIL_VERDICT
+                    ? Simulator.runUntilVerdict(map, internalSeed, EnumSet.of(fault), faultFree)
+                    : Simulator.run(map, internalSeed, EnumSet.of(fault), RunObserver.NONE);
+            verdicts.add(DifferentialOracle.judge(faultFree, faulty, fault));
+        }
+        return new JudgedMap(faultFree, verdicts);
+    }
+}

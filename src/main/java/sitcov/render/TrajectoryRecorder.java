@@ -1,0 +1,116 @@
+package sitcov.render;
+
+import java.util.Arrays;
+import java.util.List;
+import sitcov.judge.RunObserver;
+import sitcov.oracle.Accident;
+import sitcov.oracle.AccidentDetector;
+import sitcov.vehicles.AutonomousCar;
+import sitcov.vehicles.OvertakingStage;
+import sitcov.vehicles.Scene;
+
+/**
+ * Records the autonomous car's path through one run, one entry per tick: where its front centre
+ * was, where it faced, how fast it went, its overtaking stage and whether it was crossing a
+ * junction. Entries are kept in growable primitive arrays, so a 5000-tick run costs a few hundred
+ * kilobytes, not 5000 objects. Also keeps the detector's list of accidents, which is final once the
+ * run is over.
+ */
+public final class TrajectoryRecorder implements RunObserver {
+    private static final OvertakingStage[] STAGES = OvertakingStage.values();
+    private static final int INITIAL_CAPACITY = 256;
+
+    private int ticks;
+    private long[] tickNumbers = new long[INITIAL_CAPACITY];
+    private double[] xs = new double[INITIAL_CAPACITY];
+    private double[] ys = new double[INITIAL_CAPACITY];
+    private double[] headings = new double[INITIAL_CAPACITY];
+    private double[] speeds = new double[INITIAL_CAPACITY];
+    private byte[] stages = new byte[INITIAL_CAPACITY];
+    private boolean[] crossings = new boolean[INITIAL_CAPACITY];
+    private List<Accident> accidents = List.of();
+
+    @Override
+    public void afterTick(long tick, Scene scene, AccidentDetector detector) {
+        if (ticks == xs.length) {
+            grow();
+        }
+        AutonomousCar car = scene.autonomousCar();
+        tickNumbers[ticks] = tick;
+        xs[ticks] = car.x();
+        ys[ticks] = car.y();
+        headings[ticks] = car.heading();
+        speeds[ticks] = car.speed();
+        stages[ticks] = (byte) car.overtakingStage().ordinal();
+        crossings[ticks] = car.isCrossingJunction();
+        ticks++;
+        accidents = detector.accidents(); // a read-only view of the detector's list
+    }
+
+    private void grow() {
+        int capacity = xs.length * 2;
+        tickNumbers = Arrays.copyOf(tickNumbers, capacity);
+        xs = Arrays.copyOf(xs, capacity);
+        ys = Arrays.copyOf(ys, capacity);
+        headings = Arrays.copyOf(headings, capacity);
+        speeds = Arrays.copyOf(speeds, capacity);
+        stages = Arrays.copyOf(stages, capacity);
+        crossings = Arrays.copyOf(crossings, capacity);
+    }
+
+    /** How many ticks were recorded. */
+    public int ticks() {
+        return ticks;
+    }
+
+    /** The simulation tick of entry {@code i} (entry i is normally tick i). */
+    public long tick(int i) {
+        check(i);
+        return tickNumbers[i];
+    }
+
+    /** The x of the car's front centre after entry {@code i}'s tick, in metres. */
+    public double x(int i) {
+        check(i);
+        return xs[i];
+    }
+
+    public double y(int i) {
+        check(i);
+        return ys[i];
+    }
+
+    /** Bearing in degrees (0 south, 90 east, 180 north, 270 west). */
+    public double heading(int i) {
+        check(i);
+        return headings[i];
+    }
+
+    /** Metres per tick. */
+    public double speed(int i) {
+        check(i);
+        return speeds[i];
+    }
+
+    public OvertakingStage stage(int i) {
+        check(i);
+        return STAGES[stages[i]];
+    }
+
+    /** Whether the car was turning through a junction square. */
+    public boolean crossing(int i) {
+        check(i);
+        return crossings[i];
+    }
+
+    /** The accidents of the run, in order (all of them once the run is over). */
+    public List<Accident> accidents() {
+        return accidents;
+    }
+
+    private void check(int i) {
+        if (i < 0 || i >= ticks) {
+            throw new IndexOutOfBoundsException("entry " + i + " of a trajectory of " + ticks + " ticks");
+        }
+    }
+}

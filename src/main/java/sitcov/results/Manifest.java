@@ -1,0 +1,252 @@
+package sitcov.results;
+
+import java.io.IOException;
+import java.io.Reader;
+import java.io.StringReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.Map;
+import java.util.Properties;
+import java.util.TreeMap;
+import sitcov.coverage.GridDefinition;
+import sitcov.experiment.AnalysisPlan;
+import sitcov.experiment.BudgetKind;
+import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.Shard;
+import sitcov.faults.FaultSet;
+import sitcov.judge.FaultyRuns;
+
+/**
+ * {@code manifest.properties}: everything that fixes an experiment's results (the configuration,
+ * sitcov's version, the grid and its hash), which shard the folder holds, whether it is complete,
+ * and whether a wall-clock budget was interrupted. Nothing timed, so complete folders of the same
+ * experiment have the same manifest. A results folder can be resumed or merged from it alone.
+ *
+ * <p>{@code checks} holds a CRC-32 of every other line but {@code complete} (the one line the tool
+ * itself flips, and whose edits the journal exposes), so a hand edit is refused naming its key
+ * (README, "The results folder"). {@code checked} is false for a folder written before checks:
+ * it is read, and written again, without them.
+ */
+public record Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed,
+                       boolean checked) {
+    private static final String HEADER = "# sitcov experiment manifest";
+    static final String CHECKS = "checks";
+    private static final String COMPLETE = "complete";
+
+    /** A manifest with checks, as every folder is written now. */
+    public Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed) {
+        this(config, version, shard, complete, resumed, true);
+    }
+
+    public Manifest complete(boolean done) {
+        return new Manifest(config, version, shard, done, resumed, checked);
+    }
+
+    /** The same experiment, marked resumed when that changes its results (a wall-clock budget). */
+    public Manifest resumedRun() {
+        return new Manifest(config, version, shard, complete, resumed || config.budget() == BudgetKind.WALL_CLOCK, checked);
+    }
+
+    public Manifest whole() {
+        return new Manifest(config, version, Shard.WHOLE, complete, resumed, checked);
+    }
+
+    /** What to say of a folder written before checks, which is read as it is. */
+    public static String uncheckedWarning(Path folder) {
+        return "warning: " + folder + " was written before sitcov checked its results folders, so a hand edit to it"
+                + " cannot be detected; run the experiment again into a new folder for one that is checked";
+    }
+
+    /** SHA-256 of the identity's lines: what keys the journal's checks to this experiment. */
+    String experimentDigest() {
+        StringBuilder text = new StringBuilder();
+        identity().forEach((k, v) -> text.append(k).append('=').append(v).append('\n'));
+        return sha256(text.toString());
+    }
+
+    /** The command that runs this experiment again into a new folder. */
+    String rerun() {
+        return "run " + config.name() + " --seed " + config.masterSeed() + " --replications " + config.replications()
+                + (shard.isWhole() ? "" : " --shard " + shard) + " --out NEW_FOLDER";
+    }
+
+    /** The keys that say which experiment this is: folders to merge must agree on all of them. */
+    public Map<String, String> identity() {
+        Map<String, String> m = new TreeMap<>();
+        ExperimentConfig c = config;
+        m.put("preset", c.name());
+        m.put("sitcov_version", version);
+        m.put("master_seed", Long.toString(c.masterSeed()));
+        m.put("drivers", String.join(",", c.drivers()));
+        m.put("candidates", Integer.toString(c.candidates()));
+        m.put("replications", Integer.toString(c.replications()));
+        if (c.isSweep()) {
+            m.put("sweep", String.join(",", c.sweep().stream().map(String::valueOf).toList()));
+        }
+        m.put("faults", FaultSet.format(c.faults()));
+        m.put("budget", c.budget().key());
+        m.put("candidate_limit", Integer.toString(c.candidateLimit()));
+        m.put("faulty_runs", c.faultyRuns().key());
+        m.put("grid", ResultsFolder.GRID);
+        m.put("grid_sha256", sha256(c.grid().format()));
+        m.putAll(c.analysis().properties());
+        return m;
+    }
+
+    List<String> lines() {
+        Map<String, String> m = new TreeMap<>(identity());
+        if (!shard.isWhole()) {
+            m.put("shard", shard.toString());
+        }
+        if (resumed) {
+            m.put("resumed", "true");
+        }
+        if (checked) {
+            List<String> crcs = new ArrayList<>();
+            m.forEach((k, v) -> crcs.add(JournalCheck.crc(k + "=" + v)));
+            m.put(CHECKS, String.join(" ", crcs));
+        }
+        m.put(COMPLETE, Boolean.toString(complete));
+        List<String> rows = new ArrayList<>();
+        rows.add(HEADER);
+        m.forEach((k, v) -> rows.add(k + "=" + v));
+        return rows;
+    }
+
+    /** Writes the manifest and the grid file beside it. */
+    public void write(Path folder) throws IOException {
+        OutputFile.writeLines(folder.resolve(ResultsFolder.GRID), Arrays.asList(config.grid().format().split("\n")));
+        OutputFile.writeLines(folder.resolve(ResultsFolder.MANIFEST), lines());
+    }
+
+    /**
+     * Reads a results folder's manifest and grid.
+     *
+     * @throws IllegalArgumentException naming the folder and what is missing or wrong
+     */
+    public static Manifest read(Path folder) throws IOException {
+        Path file = folder.resolve(ResultsFolder.MANIFEST);
+        Properties p = new Properties();
+        String text;
+        try {
+            text = Files.readString(file, StandardCharsets.UTF_8);
+        } catch (NoSuchFileException e) {
+            throw new IllegalArgumentException(folder + " is not a results folder: it has no " + ResultsFolder.MANIFEST);
+        }
+        try (Reader r = new StringReader(text)) {
+            p.load(r);
+        }
+        if (p.containsKey(CHECKS)) {
+            verify(text, file);
+        }
+        try {
+            GridDefinition grid = GridDefinition.read(folder.resolve(ResultsFolder.GRID));
+            if (!sha256(grid.format()).equals(required(p, "grid_sha256"))) {
+                throw new IllegalArgumentException(ResultsFolder.GRID + " does not match grid_sha256: the grid was edited");
+            }
+            String sweepText = p.getProperty("sweep", "");
+            List<Integer> sweep = sweepText.isBlank() ? List.of()
+                    : Arrays.stream(sweepText.split(",")).map(s -> Integer.parseInt(s.strip())).toList();
+            List<String> drivers = List.of(required(p, "drivers").split(","));
+            ExperimentConfig config = new ExperimentConfig(required(p, "preset"), Long.parseLong(required(p, "master_seed")),
+                    Integer.parseInt(required(p, "candidates")), Integer.parseInt(required(p, "replications")),
+                    FaultSet.parse(required(p, "faults")), BudgetKind.ofKey(required(p, "budget")), grid,
+                    drivers, sweep, Integer.parseInt(required(p, "candidate_limit")),
+                    // folders written before faulty runs could stop at their verdict ran them to the end
+                    FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.TO_END.key())),
+                    // folders written before the analysis was declared are judged by its defaults
+                    AnalysisPlan.read(p::getProperty, drivers));
+            Shard shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
+            return new Manifest(config, required(p, "sitcov_version"), shard,
+                    Boolean.parseBoolean(required(p, COMPLETE)), Boolean.parseBoolean(p.getProperty("resumed", "false")),
+                    p.containsKey(CHECKS));
+        } catch (NoSuchFileException e) {
+            throw new IllegalArgumentException(folder + " lacks " + e.getFile() + "; it is not a whole results folder");
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(file + ": " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * Refuses a manifest whose lines are not those its checks were made of, naming the keys that
+     * were changed, added or removed.
+     */
+    private static void verify(String text, Path file) {
+        List<String> lines = new ArrayList<>();
+        String checks = "";
+        for (String line : text.split("\n", -1)) {
+            String key = key(line);
+            if (key.equals(CHECKS)) {
+                checks = line.substring(line.indexOf('=') + 1).strip();
+            } else if (!key.isEmpty() && !key.equals(COMPLETE)) {
+                lines.add(line);
+            }
+        }
+        List<String> stored = checks.isEmpty() ? List.of() : List.of(checks.split(" +"));
+        List<String> changed = new ArrayList<>();
+        if (stored.size() == lines.size()) {
+            for (int i = 0; i < lines.size(); i++) {
+                if (!JournalCheck.crc(lines.get(i)).equals(stored.get(i))) {
+                    changed.add(key(lines.get(i)));
+                }
+            }
+        } else {
+            lines.stream().filter(l -> !stored.contains(JournalCheck.crc(l))).forEach(l -> changed.add(key(l)));
+        }
+        if (changed.isEmpty() && stored.size() == lines.size()) {
+            return;
+        }
+        String what = changed.isEmpty() ? removed(lines, stored) : String.join(", ", changed) + (changed.size() == 1
+                ? " was" : " were") + (stored.size() == lines.size() ? " changed" : " added or changed");
+        throw new IllegalArgumentException(file + ": " + what + " after sitcov wrote it (the manifest's '" + CHECKS
+                + "' line no longer matches); put the manifest back as it was, or run the experiment again into a"
+                + " new folder");
+    }
+
+    /** Where lines are missing: before the first line that is out of step with the checks. */
+    private static String removed(List<String> lines, List<String> stored) {
+        if (lines.size() > stored.size()) {
+            return "a line was repeated";
+        }
+        for (int i = 0; i < lines.size(); i++) {
+            if (!JournalCheck.crc(lines.get(i)).equals(stored.get(i))) {
+                return "a line before '" + key(lines.get(i)) + "' was removed";
+            }
+        }
+        return lines.isEmpty() ? "its lines were removed" : "a line after '" + key(lines.get(lines.size() - 1)) + "' was removed";
+    }
+
+    /** The key of a properties line; empty for a comment or a blank line. */
+    private static String key(String line) {
+        String s = line.strip();
+        if (s.isEmpty() || s.startsWith("#") || s.startsWith("!")) {
+            return "";
+        }
+        int eq = s.indexOf('=');
+        return (eq < 0 ? s : s.substring(0, eq)).strip();
+    }
+
+    private static String required(Properties p, String key) {
+        String v = p.getProperty(key);
+        if (v == null) {
+            throw new IllegalArgumentException("no '" + key + "='");
+        }
+        return v.strip();
+    }
+
+    static String sha256(String text) {
+        try {
+            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8)));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every JDK has SHA-256", e);
+        }
+    }
+}

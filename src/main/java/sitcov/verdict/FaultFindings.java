@@ -1,0 +1,95 @@
+package sitcov.verdict;
+
+import static sitcov.verdict.VerdictText.ids;
+import static sitcov.verdict.VerdictText.p;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import sitcov.analysis.Comparison;
+import sitcov.analysis.FaultTest;
+import sitcov.analysis.Finding;
+import sitcov.analysis.PairedDifference;
+
+/** The per-fault sentence of one pair: which faults each driver's maps find more often, and which could not be tested. */
+public final class FaultFindings {
+    private FaultFindings() {
+    }
+
+    static String line(Comparison comparison, String a, String b) {
+        List<String> moreA = new ArrayList<>();
+        List<String> moreB = new ArrayList<>();
+        List<Integer> none = new ArrayList<>();
+        double lowest = Double.POSITIVE_INFINITY;
+        double highest = 0;
+        Map<String, List<Integer>> untested = new TreeMap<>();
+        for (FaultTest f : comparison.faults()) {
+            if (!f.driverA().equals(a) || !f.driverB().equals(b)) {
+                continue;
+            }
+            int id = f.fault().id();
+            switch (f.finding()) {
+                case HIGHER_A -> moreA.add(found(f));
+                case HIGHER_B -> moreB.add(found(f));
+                case INCONCLUSIVE -> {
+                    none.add(id);
+                    if (Double.isFinite(f.paired().detectable())) {
+                        lowest = Math.min(lowest, f.paired().detectable());
+                        highest = Math.max(highest, f.paired().detectable());
+                    }
+                }
+                case TOO_FEW -> untested.computeIfAbsent(Comparison.tooFewReplications(f.paired().replications())
+                        ? "too few replications" : "too few replications differ", k -> new ArrayList<>()).add(id);
+                case NOT_TESTABLE -> untested.computeIfAbsent(f.note(), k -> new ArrayList<>()).add(id);
+                case EQUIVALENT -> throw new IllegalStateException("faults are not tested for equivalence");
+            }
+        }
+        StringBuilder s = new StringBuilder("- per fault (each replication's share of its maps finding the fault, paired"
+                + " signed-rank test, Holm-adjusted): ");
+        List<String> parts = new ArrayList<>();
+        if (!moreA.isEmpty()) {
+            parts.add("found on a larger share of " + a + "'s maps: " + String.join("; ", moreA));
+        }
+        if (!moreB.isEmpty()) {
+            parts.add("found on a larger share of " + b + "'s maps: " + String.join("; ", moreB));
+        }
+        if (!none.isEmpty()) {
+            parts.add("no difference shown for " + ids(none) + (lowest <= highest ? String.format(Locale.ROOT,
+                    " (the test could have detected %s to %s points or more)", points(lowest), points(highest)) : ""));
+        }
+        List<String> why = new ArrayList<>();
+        untested.forEach((reason, ids) -> why.add(ids(ids) + " (" + reason + ")"));
+        if (!why.isEmpty()) {
+            parts.add("not tested: " + String.join(", ", why));
+        }
+        return s.append(parts.isEmpty() ? "no faults." : String.join("; ", parts) + ".").toString();
+    }
+
+    /** "fault 16 (59.8 % of fault-search's maps against 38.7 % of random's, +21.3 points, CI …)": the higher first. */
+    private static String found(FaultTest f) {
+        PairedDifference d = f.paired();
+        boolean a = f.finding() == Finding.HIGHER_A;
+        double sign = a ? 1 : -1;
+        double low = a ? d.difference().low() : -d.difference().high();
+        double high = a ? d.difference().high() : -d.difference().low();
+        return String.format(Locale.ROOT, "fault %d (%s %% of %s's maps against %s %% of %s's, +%s points, CI %s to %s;"
+                + " Holm p = %s)", f.fault().id(), percent(a ? d.meanA() : d.meanB()), a ? f.driverA() : f.driverB(),
+                percent(a ? d.meanB() : d.meanA()), a ? f.driverB() : f.driverA(), points(sign * d.difference().estimate()),
+                points(low), points(high), p(d.pAdjusted()));
+    }
+
+    private static String percent(double share) {
+        return String.format(Locale.ROOT, "%.1f", 100 * share);
+    }
+
+    /** A difference of shares in percentage points. */
+    private static String points(double share) {
+        return String.format(Locale.ROOT, "%.1f", 100 * share);
+    }
+
+    public static boolean differs(Finding f) {
+        return f == Finding.HIGHER_A || f == Finding.HIGHER_B;
+    }
+}

@@ -1,19 +1,108 @@
 package sitcov.experiment;
 
 /**
- * What one driver may spend in a replication: {@code amount} of one measure (candidates drawn,
- * simulated ticks, or wall-clock nanoseconds), and never more than {@code candidateLimit} candidates.
- * A later driver's amount is what the first driver spends, which it learns from {@code lead} as the
- * first goes on: a budget of ticks or wall-clock time always has a lead, and {@code amount} counts only
- * candidates.
+ * What one driver may spend in a replication, by kind: the leading driver's number of candidates, or
+ * a following driver's share measured on what the leader spends, in simulated ticks or in wall-clock
+ * time (README, "Experiments: drivers, budgets and the results folder"). Every kind also caps the candidates a driver may draw.
  */
-record Budget(StopReason measure, long amount, long candidateLimit, Lead lead) {
-    static Budget candidates(int n) {
-        return new Budget(StopReason.CANDIDATES, n, n, null);
+sealed interface Budget {
+    /** The most candidates the driver may draw. */
+    int candidateLimit();
+
+    /** Why a driver stopped that drew {@link #candidateLimit()} candidates. */
+    StopReason atLimit();
+
+    /** Why a driver stopped that spent its budget before reaching the limit. */
+    StopReason spentOut();
+
+    /** Whether a driver below its limit that has spent {@code ticks} in {@code elapsedNanos} may draw again; may wait. */
+    boolean left(long ticks, long elapsedNanos, Runnable checkHalt);
+
+    /** How much of the budget {@code drawn} candidates, {@code ticks} and {@code elapsedNanos} are (not clamped). */
+    double share(int drawn, long ticks, long elapsedNanos);
+
+    /** The driver has now spent {@code ticks} in all. */
+    default void charged(long ticks) {
     }
 
-    /** The budget of a later driver: what the first driver spends, in the experiment's kind of budget. */
-    static Budget after(BudgetKind kind, Lead lead, int candidateLimit) {
-        return new Budget(kind == BudgetKind.TICKS ? StopReason.TICKS : StopReason.WALL_CLOCK, -1, candidateLimit, lead);
+    /** The leading driver's budget: {@code count} candidates; it tells the {@code lead} what it spends as it goes. */
+    record Candidates(int count, Lead lead) implements Budget {
+        @Override
+        public int candidateLimit() {
+            return count;
+        }
+
+        @Override
+        public StopReason atLimit() {
+            return StopReason.CANDIDATES;
+        }
+
+        @Override
+        public StopReason spentOut() {
+            return StopReason.CANDIDATES;
+        }
+
+        @Override
+        public boolean left(long ticks, long elapsedNanos, Runnable checkHalt) {
+            return true;
+        }
+
+        @Override
+        public double share(int drawn, long ticks, long elapsedNanos) {
+            return (double) drawn / count;
+        }
+
+        @Override
+        public void charged(long ticks) {
+            lead.spent(ticks);
+        }
+    }
+
+    /** A following driver's budget: the simulated ticks the leader spends (reproducible). */
+    record TicksOfLead(Lead lead, int candidateLimit) implements Budget {
+        @Override
+        public StopReason atLimit() {
+            return StopReason.CANDIDATE_LIMIT;
+        }
+
+        @Override
+        public StopReason spentOut() {
+            return StopReason.TICKS;
+        }
+
+        @Override
+        public boolean left(long ticks, long elapsedNanos, Runnable checkHalt) {
+            return lead.ticksLeft(ticks, checkHalt);
+        }
+
+        @Override
+        public double share(int drawn, long ticks, long elapsedNanos) {
+            long amount = lead.ticksSoFar();
+            return amount == 0 ? 1 : (double) ticks / amount;
+        }
+    }
+
+    /** A following driver's budget: the wall-clock time the leader spends (the paper's; not reproducible). */
+    record WallClockOfLead(Lead lead, int candidateLimit) implements Budget {
+        @Override
+        public StopReason atLimit() {
+            return StopReason.CANDIDATE_LIMIT;
+        }
+
+        @Override
+        public StopReason spentOut() {
+            return StopReason.WALL_CLOCK;
+        }
+
+        @Override
+        public boolean left(long ticks, long elapsedNanos, Runnable checkHalt) {
+            return lead.nanosLeft(elapsedNanos);
+        }
+
+        @Override
+        public double share(int drawn, long ticks, long elapsedNanos) {
+            long amount = lead.nanosSoFar(elapsedNanos);
+            return amount == 0 ? 1 : (double) elapsedNanos / amount;
+        }
     }
 }

@@ -1,24 +1,19 @@
 package sitcov.experiment;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.function.Supplier;
 import java.util.random.RandomGenerator;
 import sitcov.coverage.CoverageGrid;
 import sitcov.coverage.GridDefinition;
-import sitcov.judge.FaultOutcome;
-import sitcov.judge.JudgedMap;
-import sitcov.judge.MapRunner;
-import sitcov.judge.RunSummary;
 import sitcov.world.Layout;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
 
 /**
- * One driver's share of one replication: the replication's candidate stream, the budget, and the
- * one way to run a map. Everything the driver spends is charged here. On a resumed run, the maps the
- * journal holds are replayed (same candidates, same decisions) instead of simulated again.
+ * One driver's share of one replication: the replication's candidate stream, the budget the
+ * {@link ReplicationPlan} gave it, and the one way to run a map ({@link SessionJudge}: judged now, or
+ * replayed from the journal of a resumed run). Everything the driver spends is charged here.
  */
 public final class DriverSession {
     private final ExperimentRunner host;
@@ -27,44 +22,36 @@ public final class DriverSession {
     private final int driverIndex;
     private final Budget budget;
     private final RandomGenerator stream;
-    private final String streamLabel;
-    private RandomGenerator choices;
+    private final RandomGenerator choices;
     private final GridDefinition grid;
     private final CoverageGrid cells;
-    private final List<Journal.Entry> replay;
     private final Optional<Journal.Finished> finishedBefore;
     private final Driver self;
     private final SharedMaps shared;
-    /** The lead this session feeds with its ticks as it spends them, when it is the replication's first driver. */
-    private final Lead leading;
-    /** Wall time charged for maps another driver of the replication judged: as if this driver had run them. */
-    private long creditedNanos;
+    private final DriverClock clock;
+    private final SessionJudge judge;
     private int drawn;
     private int mapsRun;
     private long ticks;
     private StopReason stop;
-    private long elapsedOffset;
-    private long liveSince;
-    private long liveMapNanos;
-    private int liveMaps;
 
-    DriverSession(ExperimentRunner host, PlannedReplication replication, String driver, int driverIndex, Budget budget,
-                  Journal journal, Driver self, SharedMaps shared, Lead leading) {
-        this.shared = shared;
-        this.leading = leading;
+    DriverSession(ExperimentRunner host, ReplicationPlan plan, int driverIndex, Journal journal, Driver self) {
+        PlannedReplication p = plan.replication();
         this.host = host;
-        this.replication = replication.index();
-        this.driver = driver;
+        this.replication = p.index();
+        this.driver = host.config().drivers().get(driverIndex);
         this.driverIndex = driverIndex;
-        this.budget = budget;
-        this.stream = SeedPlan.candidates(host.config().masterSeed(), replication.streamLabel());
-        this.streamLabel = replication.streamLabel();
+        this.budget = plan.budget(driverIndex);
+        this.stream = SeedPlan.candidates(host.config().masterSeed(), p.streamLabel());
+        this.choices = SeedPlan.choices(host.config().masterSeed(), p.streamLabel(), driver);
         this.grid = host.config().grid();
         this.cells = new CoverageGrid(grid);
-        this.replay = journal.maps(replication.index(), driver);
-        this.finishedBefore = journal.finished(replication.index(), driver);
-        this.liveSince = host.nanoTime();
+        this.finishedBefore = journal.finished(replication, driver);
         this.self = self;
+        this.shared = plan.shared();
+        List<Journal.Entry> replay = journal.maps(replication, driver);
+        this.clock = new DriverClock(host::nanoTime, !replay.isEmpty());
+        this.judge = JournalReplay.over(replay, new FreshJudge(host, replication, driver, shared, clock), clock);
     }
 
     /** Whether the driver may draw another candidate. Once false, it stays false. */
@@ -74,20 +61,15 @@ public final class DriverSession {
             return false;
         }
         if (finishedBefore.isPresent()) {
-            stop = drawn < finishedBefore.get().spend().candidates() ? null : finishedBefore.get().spend().stoppedBy();
+            stop = finishedBefore.get().stopAt(drawn);
             return stop == null;
         }
         if (drawn >= budget.candidateLimit()) {
-            stop = budget.measure() == StopReason.CANDIDATES ? StopReason.CANDIDATES : StopReason.CANDIDATE_LIMIT;
+            stop = budget.atLimit();
             return false;
         }
-        Lead lead = budget.lead();
-        boolean left = switch (budget.measure()) {
-            case TICKS -> lead.ticksLeft(ticks, host::checkHalt);
-            case WALL_CLOCK -> lead.nanosLeft(elapsedNanos());
-            default -> true;
-        };
-        stop = left ? null : budget.measure();
+        boolean left = budget.left(ticks, clock.elapsed(), host::checkHalt);
+        stop = left ? null : budget.spentOut();
         return left;
     }
 
@@ -119,9 +101,6 @@ public final class DriverSession {
 
     /** The stream of this driver's own choices in this replication (which situation to edit, how). */
     public RandomGenerator choices() {
-        if (choices == null) {
-            choices = SeedPlan.choices(host.config().masterSeed(), streamLabel, driver);
-        }
         return choices;
     }
 
@@ -150,9 +129,7 @@ public final class DriverSession {
      * @throws IllegalStateException when the name was run before in this replication, by any driver
      */
     public MapRun run(String name, WorldMap situation) {
-        shared.claim(name, driver);
-        double[] values = grid.values(situation.layout());
-        return run(new MapId.Situation(name), -1, values, grid.cellOf(values), () -> situation, Optional.of(situation));
+        return run(name, situation, -1);
     }
 
     /**
@@ -160,92 +137,33 @@ public final class DriverSession {
      * search pays per candidate like a filter and every map's candidate is its place in the stream).
      */
     public MapRun run(String name, WorldMap situation, Candidate spent) {
+        return run(name, situation, spent.index());
+    }
+
+    private MapRun run(String name, WorldMap situation, int candidate) {
         shared.claim(name, driver);
         double[] values = grid.values(situation.layout());
-        return run(new MapId.Situation(name), spent.index(), values, grid.cellOf(values), () -> situation,
+        return run(new MapId.Situation(name), candidate, values, grid.cellOf(values), () -> situation,
                 Optional.of(situation));
     }
 
     private MapRun run(MapId id, int candidate, double[] criteria, int cell, Supplier<WorldMap> map,
                        Optional<WorldMap> built) {
         host.checkHalt();
-        int index = mapsRun;
-        if (index < replay.size()) {
-            Journal.Entry e = replay.get(index);
-            MapRun run = e.run();
-            if (!run.map().equals(id) || run.candidate() != candidate || run.cell() != cell) {
-                throw new IllegalStateException("the journal does not match this run: map " + index + " of driver " + driver
-                        + " in replication " + replication + " is " + run.map().text() + " (candidate " + run.candidate()
-                        + ") in the journal but " + id.text() + " (candidate " + candidate + ") now");
-            }
-            charge(run);
-            if (index == replay.size() - 1) {
-                elapsedOffset = e.driverNanos();
-                liveSince = host.nanoTime();
-            }
-            host.emit(new ExperimentEvent.MapJudged(run, built, true, e.mapNanos(), e.driverNanos(), driverIndex,
-                    progress()));
-            return run;
-        }
-        long start = host.nanoTime();
-        long internal = SeedPlan.internalSeed(host.config().masterSeed(), id);
-        SharedMaps.Judged judgedBefore = shared.judged(id);
-        WorldMap world;
-        JudgedMap judged;
-        if (judgedBefore != null) {
-            // the same map and seeds run the same: judged once, charged to every driver that runs it
-            world = judgedBefore.world();
-            judged = judgedBefore.judged();
-        } else {
-            world = map.get();
-            judged = MapRunner.judge(world, internal, host.faults(), host.config().faultyRuns());
-        }
-        List<Double> values = new ArrayList<>(criteria.length);
-        for (double v : criteria) {
-            values.add(v);
-        }
-        MapRun run = new MapRun(replication, driver, index, candidate, id, world.seed(), internal, cell, values,
-                RunSummary.of(judged.faultFree()), judged.verdicts().stream().map(FaultOutcome::of).toList());
-        charge(run);
-        long nanos = host.nanoTime() - start;
-        if (judgedBefore != null) {
-            creditedNanos += judgedBefore.nanos() - nanos;
-            nanos = judgedBefore.nanos();
-        } else {
-            shared.keep(id, new SharedMaps.Judged(world, judged, nanos));
-        }
-        liveMapNanos += nanos;
-        liveMaps++;
-        host.emit(new ExperimentEvent.MapJudged(run, built, false, nanos, elapsedNanos(), driverIndex, progress()));
-        return run;
-    }
-
-    private void charge(MapRun run) {
+        SessionJudge.Judgement j = judge.judge(new SessionJudge.Request(mapsRun, id, candidate, criteria, cell, map));
+        MapRun run = j.run();
         mapsRun++;
         ticks += run.ticks();
         cells.add(run.cell());
-        if (leading != null) {
-            leading.spent(ticks);
-        }
-    }
-
-    /** Wall time this driver has spent; while replaying the journal, the time the journal recorded. */
-    long elapsedNanos() {
-        if (mapsRun < replay.size()) {
-            return mapsRun == 0 ? 0 : replay.get(mapsRun - 1).driverNanos();
-        }
-        return elapsedOffset + host.nanoTime() - liveSince + creditedNanos;
+        budget.charged(ticks);
+        host.emit(new ExperimentEvent.MapJudged(run, built, j.replayed(), j.mapNanos(), j.driverNanos(), driverIndex,
+                progress()));
+        return run;
     }
 
     /** How much of its budget the driver has spent, 0..1. */
     public double budgetSpent() {
-        long amount = budget.lead() == null ? budget.amount() : budget.lead().soFar(budget.measure(), elapsedNanos());
-        double s = switch (budget.measure()) {
-            case TICKS -> amount == 0 ? 1 : (double) ticks / amount;
-            case WALL_CLOCK -> amount == 0 ? 1 : (double) elapsedNanos() / amount;
-            default -> (double) drawn / amount;
-        };
-        return Math.min(1, Math.max(0, s));
+        return Math.min(1, Math.max(0, budget.share(drawn, ticks, clock.elapsed())));
     }
 
     private double progress() {
@@ -262,31 +180,19 @@ public final class DriverSession {
 
     /** Candidates the driver may still draw when its budget is a number of candidates (it is the first driver), else -1. */
     public long candidatesLeft() {
-        return budget.measure() == StopReason.CANDIDATES ? budget.amount() - drawn : -1;
+        return budget instanceof Budget.Candidates c ? c.count() - drawn : -1;
     }
 
     /** What drawing a candidate has cost against judging a map, in wall time (0 before a map was judged). */
     public double candidateCostInMaps() {
-        if (liveMaps == 0 || drawn == 0) {
-            return 0;
-        }
-        double perMap = (double) liveMapNanos / liveMaps;
-        double perCandidate = Math.max(0, elapsedNanos() - liveMapNanos) / (double) drawn;
-        return perCandidate / perMap;
+        return clock.candidateCostInMaps(drawn);
     }
 
     /** What the driver spent; for a driver the journal shows finished, checked against the journal. */
     Journal.Finished finish() {
         DriverSpend spend = new DriverSpend(replication, driver, drawn, mapsRun, ticks, cells.covered(),
                 stop == null ? StopReason.DRIVER : stop);
-        if (finishedBefore.isPresent()) {
-            if (!finishedBefore.get().spend().equals(spend)) {
-                throw new IllegalStateException("the journal does not match this run: driver " + driver + " in replication "
-                        + replication + " finished with " + finishedBefore.get().spend() + " but replays to " + spend);
-            }
-            return finishedBefore.get();
-        }
-        return new Journal.Finished(spend, elapsedNanos());
+        return finishedBefore.map(f -> f.replayedTo(spend)).orElseGet(() -> new Journal.Finished(spend, clock.elapsed()));
     }
 
     boolean wasFinishedBefore() {

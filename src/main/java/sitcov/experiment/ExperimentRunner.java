@@ -8,15 +8,13 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.LongSupplier;
 import sitcov.faults.Fault;
 
 /**
  * Runs an experiment's replications (those of one shard) in parallel and tells the listeners what
- * happens. Within a replication the first driver draws its candidates and the later ones get
- * the same budget, learnt from it ({@link Lead}): beside it under the ticks budget, after it under the
- * wall-clock budget. Each replication is seeded from the master seed
+ * happens. Each replication's lead/follow protocol is its {@link ReplicationPlan}; its later drivers
+ * run beside its first under the ticks budget, after it under the wall-clock budget. Each replication is seeded from the master seed
  * alone, so under the ticks budget what is judged never depends on the thread count.
  */
 public final class ExperimentRunner {
@@ -71,19 +69,16 @@ public final class ExperimentRunner {
             // a replication's drivers are queued one after another: its first is always taken up before the
             // later ones that wait on it, so even one thread runs them all, in the preset's order
             for (PlannedReplication p : todo) {
-                Lead lead = new Lead();
-                // drivers of a replication read the same candidates: a map two of them run is judged once
-                SharedMaps shared = new SharedMaps(p.index());
-                AtomicInteger driversLeft = new AtomicInteger(drivers);
+                ReplicationPlan plan = new ReplicationPlan(p, config);
                 if (beside) {
                     for (int d = 0; d < drivers; d++) {
                         int driver = d;
-                        futures.add(pool.submit(() -> runDriver(p, driver, lead, shared, driversLeft)));
+                        futures.add(pool.submit(() -> runDriver(plan, driver)));
                     }
                 } else {
                     futures.add(pool.submit(() -> {
                         for (int d = 0; d < drivers; d++) {
-                            runDriver(p, d, lead, shared, driversLeft);
+                            runDriver(plan, d);
                         }
                     }));
                 }
@@ -120,29 +115,22 @@ public final class ExperimentRunner {
         halted = true;
     }
 
-    /** One driver's share of a replication; the later drivers run beside the first, spending what it spends. */
-    private void runDriver(PlannedReplication p, int d, Lead lead, SharedMaps shared,
-                           AtomicInteger driversLeft) {
-        String name = config.drivers().get(d);
-        Budget budget = d == 0 ? Budget.candidates(p.candidates()) : Budget.after(config.budget(), lead, config.candidateLimit());
-        Driver driver = drivers.create(name);
-        DriverSession session = new DriverSession(this, p, name, d, budget, journal, driver, shared, d == 0 ? lead : null);
+    /** One driver's share of a replication, with the budget and the shared maps its plan gives it. */
+    private void runDriver(ReplicationPlan plan, int d) {
+        Driver driver = drivers.create(config.drivers().get(d));
+        DriverSession session = new DriverSession(this, plan, d, journal, driver);
         Journal.Finished done;
         try {
             driver.drive(session);
             done = session.finish();
         } catch (RuntimeException | Error e) {
-            if (d == 0) {
-                lead.abandoned();
-            }
+            plan.failed(d);
             throw e;
         }
-        if (d == 0) {
-            lead.finished(done.spend().ticks(), done.driverNanos());
-        }
+        plan.finished(d, done);
         emit(new ExperimentEvent.DriverDone(done.spend(), d, session.wasFinishedBefore(), done.driverNanos()));
-        if (driversLeft.decrementAndGet() == 0) {
-            emit(new ExperimentEvent.ReplicationDone(p.index()));
+        if (plan.countOff()) {
+            emit(new ExperimentEvent.ReplicationDone(plan.replication().index()));
         }
     }
 

@@ -18,6 +18,20 @@ public final class Journal {
 
     /** A driver that finished its share of a replication, and its total wall time. */
     public record Finished(DriverSpend spend, long driverNanos) {
+        /** Why the replayed driver stops after drawing {@code drawn} candidates: where it stopped before, or null. */
+        StopReason stopAt(int drawn) {
+            return drawn < spend.candidates() ? null : spend.stoppedBy();
+        }
+
+        /** This, after checking that the driver replayed to the same spend. */
+        Finished replayedTo(DriverSpend replayed) {
+            if (!spend.equals(replayed)) {
+                throw new IllegalStateException("the journal does not match this run: driver " + spend.driver()
+                        + " in replication " + spend.replication() + " finished with " + spend + " but replays to "
+                        + replayed);
+            }
+            return this;
+        }
     }
 
     private final Map<String, List<Entry>> maps = new HashMap<>();

@@ -58,9 +58,14 @@ final class Lead {
         return !finished || elapsed < finalNanos;
     }
 
-    /** What the first driver has spent so far, in the measure of {@code budget} (for progress displays). */
-    synchronized long soFar(StopReason measure, long nanosNow) {
-        return measure == StopReason.TICKS ? ticks : finished ? finalNanos : nanosNow;
+    /** The ticks the first driver has spent so far (for progress displays). */
+    synchronized long ticksSoFar() {
+        return ticks;
+    }
+
+    /** The first driver's wall time: its total once finished, else {@code nanosNow} (for progress displays). */
+    synchronized long nanosSoFar(long nanosNow) {
+        return finished ? finalNanos : nanosNow;
     }
 
     private void checkAbandoned() {

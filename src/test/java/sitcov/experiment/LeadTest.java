@@ -31,7 +31,7 @@ class LeadTest {
         lead.finished(800, 123);
         assertFalse(atTheEnd.get(), "the first finished at 800: a driver with 800 is done, as it would be after it");
         assertTrue(lead.ticksLeft(799, NO_HALT));
-        assertEquals(800, lead.soFar(StopReason.TICKS, 0));
+        assertEquals(800, lead.ticksSoFar());
     }
 
     @Test

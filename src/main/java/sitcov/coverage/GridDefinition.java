@@ -88,6 +88,55 @@ public record GridDefinition(List<Criterion> criteria, List<Bins> bins) {
         return rest % bins.get(criterion).count();
     }
 
+    /**
+     * The cell of these bins, one per criterion in the grid's order: cells number their bins mixed-radix,
+     * the first criterion varying slowest, as {@link #cellOf(double[])} does.
+     */
+    public int cellAt(int... binOfEach) {
+        if (binOfEach.length != bins.size()) {
+            throw new IllegalArgumentException("a cell of this grid has " + bins.size() + " bins, got " + binOfEach.length);
+        }
+        int cell = 0;
+        for (int i = 0; i < binOfEach.length; i++) {
+            int count = bins.get(i).count();
+            if (binOfEach[i] < 0 || binOfEach[i] >= count) {
+                throw new IllegalArgumentException("criterion " + criteria.get(i).key() + " has bins 0.." + (count - 1)
+                        + ", not " + binOfEach[i]);
+            }
+            cell = cell * count + binOfEach[i];
+        }
+        return cell;
+    }
+
+    /**
+     * The cells next to {@code cell}: one bin down or up in one criterion, the rest alike. Listed the last
+     * criterion first, each the bin below before the bin above; coverage search draws from this order, so
+     * changing it changes its results.
+     */
+    public List<Neighbour> neighbours(int cell) {
+        List<Neighbour> next = new ArrayList<>();
+        int stride = 1;
+        for (int c = bins.size() - 1; c >= 0; c--) {
+            int count = bins.get(c).count();
+            int bin = (cell / stride) % count;
+            if (bin > 0) {
+                next.add(new Neighbour(c, bin, -1, cell - stride));
+            }
+            if (bin < count - 1) {
+                next.add(new Neighbour(c, bin, 1, cell + stride));
+            }
+            stride *= count;
+        }
+        return next;
+    }
+
+    /**
+     * A cell next to another: criterion {@code criterion} is in bin {@code bin + step} in {@code cell}
+     * and in bin {@code bin} in the other; {@code step} is −1 or +1.
+     */
+    public record Neighbour(int criterion, int bin, int step, int cell) {
+    }
+
     /** The definition as a grid file: reading it back gives the same grid, and equal grids give equal text. */
     public String format() {
         StringBuilder out = new StringBuilder(HEADER).append('\n');

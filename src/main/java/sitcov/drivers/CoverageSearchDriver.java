@@ -6,6 +6,7 @@ import java.util.Optional;
 import java.util.TreeMap;
 import java.util.random.RandomGenerator;
 import sitcov.coverage.Bins;
+import sitcov.coverage.GridDefinition;
 import sitcov.experiment.Candidate;
 import sitcov.experiment.Driver;
 import sitcov.experiment.DriverSession;
@@ -73,25 +74,25 @@ final class CoverageSearchDriver implements Driver {
     }
 
     private void search(DriverSession session, RandomGenerator choose) {
-        List<int[]> frontier = frontier(session);
+        List<Aim> frontier = frontier(session);
         // the edit is paid for with the next candidate of the stream, set aside
         Candidate spent = session.nextCandidate();
         WorldMap parent;
-        int[] aim = null;
+        Aim aim = null;
         if (frontier.isEmpty()) {
             List<Integer> all = new ArrayList<>(elites.keySet());
             parent = elites.get(all.get(choose.nextInt(all.size())));
         } else {
             // an elite, a criterion in which the next bin is empty, and which way: aim the edit there
             aim = pick(frontier, choose);
-            parent = elites.get(aim[0]);
+            parent = elites.get(aim.elite());
         }
         // one candidate is one situation that keeps the world's rules, as the generator's are: an edit
         // that breaks one is drawn again, as the generator draws a parked car's place again
         Optional<WorldMap> child = Optional.empty();
         for (int draw = 0; draw < DRAWS && child.isEmpty(); draw++) {
             SituationEdit edit = aim == null ? AimedEdits.random(parent.layout(), choose)
-                    : AimedEdits.toward(parent, session.grid(), aim[1], aim[2], aim[3], choose);
+                    : AimedEdits.toward(parent, session.grid(), aim.criterion(), aim.bin(), aim.step(), choose);
             child = edit.apply(parent);
         }
         if (child.isEmpty()) {
@@ -105,14 +106,14 @@ final class CoverageSearchDriver implements Driver {
     }
 
     /** An aim drawn evenly, or by the weight of its elite. */
-    private int[] pick(List<int[]> frontier, RandomGenerator choose) {
+    private Aim pick(List<Aim> frontier, RandomGenerator choose) {
         if (preference.even()) {
             return frontier.get(choose.nextInt(frontier.size()));
         }
         double[] upTo = new double[frontier.size()];
         double total = 0;
         for (int i = 0; i < upTo.length; i++) {
-            total += preference.weight(frontier.get(i)[0]);
+            total += preference.weight(frontier.get(i).elite());
             upTo[i] = total;
         }
         double draw = choose.nextDouble() * total;
@@ -124,27 +125,23 @@ final class CoverageSearchDriver implements Driver {
         return frontier.get(upTo.length - 1);
     }
 
-    /**
-     * Every (elite cell, criterion, its bin there, step ±1) whose neighbouring cell is still empty;
-     * cells number their bins mixed-radix, the first criterion slowest.
-     */
-    private List<int[]> frontier(DriverSession session) {
-        List<Bins> bins = session.grid().bins();
-        List<int[]> aims = new ArrayList<>();
+    /** Every aim at an empty cell next to an elite: the elites in cell order, each's neighbours in the grid's order. */
+    private List<Aim> frontier(DriverSession session) {
+        List<Aim> aims = new ArrayList<>();
         for (int cell : elites.keySet()) {
-            int stride = 1;
-            for (int c = bins.size() - 1; c >= 0; c--) {
-                int count = bins.get(c).count();
-                int digit = (cell / stride) % count;
-                if (digit > 0 && !session.covers(cell - stride)) {
-                    aims.add(new int[] {cell, c, digit, -1});
+            for (GridDefinition.Neighbour next : session.grid().neighbours(cell)) {
+                if (!session.covers(next.cell())) {
+                    aims.add(new Aim(cell, next.criterion(), next.bin(), next.step()));
                 }
-                if (digit < count - 1 && !session.covers(cell + stride)) {
-                    aims.add(new int[] {cell, c, digit, 1});
-                }
-                stride *= count;
             }
         }
         return aims;
+    }
+
+    /**
+     * An edit's aim: the elite in cell {@code elite}, whose criterion {@code criterion} is in bin
+     * {@code bin}, edited towards the empty cell one bin {@code step} (±1) away in that criterion.
+     */
+    record Aim(int elite, int criterion, int bin, int step) {
     }
 }

@@ -7,21 +7,24 @@ package sitcov.experiment;
  * where a preset's {@link AnalysisPlan} picks them; computed in {@code sitcov.analysis.Metrics}.
  */
 public enum Measure {
-    CELLS_COVERED("cells_covered", "cells covered", "cells", 5),
-    MAPS_RUN("maps_run", "maps run", "maps", 5),
-    FAULTS_FOUND("faults_found", "distinct faults found", "faults", 1),
-    AVG_MAP_FAULT("avg_map_fault", "faults found per map (avg-map-fault)", "faults a map", 0.1),
-    PROP_MAP_ALL_FAULT("prop_map_all_fault", "share of maps finding every fault (prop-map-all-fault)", "", 0.01),
-    DISCOVERY_AREA("discovery_area", "area under faults found against ticks", "", 0.02);
+    CELLS_COVERED("cells_covered", "cells covered", "cells covered", "cells", 5),
+    MAPS_RUN("maps_run", "maps run", "maps run", "maps", 5),
+    FAULTS_FOUND("faults_found", "distinct faults found", "distinct faults found", "faults", 1),
+    AVG_MAP_FAULT("avg_map_fault", "faults found per map (avg-map-fault)", "faults found per map", "faults a map", 0.1),
+    PROP_MAP_ALL_FAULT("prop_map_all_fault", "share of maps finding every fault (prop-map-all-fault)",
+            "share of maps finding every fault", "", 0.01),
+    DISCOVERY_AREA("discovery_area", "area under faults found against ticks", "area under faults-vs-ticks", "", 0.02);
 
     private final String key;
     private final String words;
+    private final String label;
     private final String unit;
     private final double defaultMargin;
 
-    Measure(String key, String words, String unit, double defaultMargin) {
+    Measure(String key, String words, String label, String unit, double defaultMargin) {
         this.key = key;
         this.words = words;
+        this.label = label;
         this.unit = unit;
         this.defaultMargin = defaultMargin;
     }
@@ -33,6 +36,11 @@ public enum Measure {
 
     public String words() {
         return words;
+    }
+
+    /** The measure's short name, for a figure's axis or a table's column head. */
+    public String label() {
+        return label;
     }
 
     /** What one unit of the measure counts ("faults"), or empty for a share. */

@@ -70,7 +70,7 @@ public final class CoverageHeatMap {
                 g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
                 for (int r = 0; r < rows.count(); r++) {
                     for (int c = 0; c < cols.count(); c++) {
-                        int cell = (c * rows.count() + r) * slices.count() + s;
+                        int cell = def.cellAt(c, r, s);
                         int count = grid.count(cell);
                         int x = x0 + c * CELL;
                         int y = y0 + r * CELL;

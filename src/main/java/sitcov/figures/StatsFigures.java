@@ -37,18 +37,13 @@ import sitcov.verdict.VerdictText;
  * ticks (median and quartile band over replications).
  */
 public final class StatsFigures {
-    private static final Strip[] STRIPS = {
-        new Strip(Measure.CELLS_COVERED, "cells covered"),
-        new Strip(Measure.FAULTS_FOUND, "distinct faults found"),
-        new Strip(Measure.AVG_MAP_FAULT, "faults found per map"),
-        new Strip(Measure.DISCOVERY_AREA, "area under faults-vs-ticks")};
+    /** The measures drawn as strips, each under its {@link Measure#label()}. */
+    private static final List<Measure> STRIPS = List.of(Measure.CELLS_COVERED, Measure.FAULTS_FOUND,
+            Measure.AVG_MAP_FAULT, Measure.DISCOVERY_AREA);
     private static final double OR_MIN = 0.05;
     private static final double OR_MAX = 20;
     /** Driver names under the strips are slanted by this much when they do not fit side by side. */
     private static final double SLANT = Math.toRadians(35);
-
-    private record Strip(Measure measure, String label) {
-    }
 
     /** Two drivers compared, {@code a} earlier in the preset, as {@link Comparison} orders them. */
     record Pair(String a, String b, boolean primary) {
@@ -187,18 +182,18 @@ public final class StatsFigures {
         Graphics2D g = ExperimentFigures.graphics(image);
         ExperimentFigures.title(g, "Each replication's measures by driver (" + summary.results().size()
                 + " replications; bar = median)");
-        for (int m = 0; m < STRIPS.length; m++) {
+        for (int m = 0; m < STRIPS.size(); m++) {
             double[][] values = new double[drivers.size()][];
             double max = 0;
             for (int d = 0; d < drivers.size(); d++) {
-                values[d] = Comparison.values(summary, drivers.get(d), STRIPS[m].measure());
+                values[d] = Comparison.values(summary, drivers.get(d), STRIPS.get(m));
                 for (double v : values[d]) {
                     max = Math.max(max, v);
                 }
             }
             Chart chart = new Chart(g, 70 + m * (panel + 12), 80, plotWidth, 260,
-                    new Axis(List.of(0.0), drivers.size()), axis(STRIPS[m].measure(), max, summary.faults().size()));
-            chart.axes(STRIPS[m].label(), "", "");
+                    new Axis(List.of(0.0), drivers.size()), axis(STRIPS.get(m), max, summary.faults().size()));
+            chart.axes(STRIPS.get(m).label(), "", "");
             g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
             for (int d = 0; d < drivers.size(); d++) {
                 String name = drivers.get(d);

@@ -55,7 +55,7 @@ final class ReportGrid {
                 for (int j = 0; j < b; j++) {
                     h.append("<tr><th>").append(HtmlReport.esc(range(bins.get(1), j))).append("</th>");
                     for (int k = 0; k < c; k++) {
-                        int n = maps.getOrDefault((i * b + j) * c + k, Set.of()).size();
+                        int n = maps.getOrDefault(grid.cellAt(i, j, k), Set.of()).size();
                         h.append(n == 0 ? "<td></td>" : String.format(Locale.ROOT,
                                 "<td style=\"background:rgba(31,119,180,%.2f)\">%d</td>", 0.12 + 0.6 * n / most, n));
                     }

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import sitcov.experiment.Measure;
 import sitcov.report.HtmlTable.Column;
 import sitcov.results.CsvTable;
 import sitcov.results.ResultsFolder;
@@ -15,15 +16,19 @@ import sitcov.verdict.VerdictText;
  * range, then every replication's row folded below (summary.csv holds them all, faults included).
  */
 final class ReportMeasures {
-    /** summary.csv's columns shown, with the words a reader knows them by. */
-    private static final List<Column> MEASURES = List.of(
-            Column.number("maps run", "maps_run"),
-            Column.number("cells covered", "cells_covered"),
-            Column.number("share of faults found", "method_prop_fault"),
-            Column.number("share of maps finding every fault", "prop_map_all_fault"),
-            Column.number("faults found per map", "avg_map_fault"));
+    /**
+     * summary.csv's columns shown, with the words a reader knows them by: a measure's column is named by its
+     * key and headed by its label; the share of faults found is no {@link Measure} (no test compares it).
+     */
+    private static final List<Column> MEASURES = List.of(column(Measure.MAPS_RUN), column(Measure.CELLS_COVERED),
+            Column.number("share of faults found", "method_prop_fault"), column(Measure.PROP_MAP_ALL_FAULT),
+            column(Measure.AVG_MAP_FAULT));
 
     private ReportMeasures() {
+    }
+
+    private static Column column(Measure m) {
+        return Column.number(m.label(), m.key());
     }
 
     static void append(StringBuilder h, CsvTable summary) {

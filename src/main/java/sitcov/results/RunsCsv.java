@@ -50,14 +50,10 @@ public final class RunsCsv {
         List<String> all = new ArrayList<>(mapColumns);
         all.addAll(List.of(FAULT, "outcome", "ticks"));
         for (AccidentType t : AccidentType.values()) {
-            all.add(accidentColumn(t));
+            all.add(t.column());
         }
         all.addAll(FAULT_ONLY);
         this.columns = new Columns(all);
-    }
-
-    private static String accidentColumn(AccidentType t) {
-        return t.name().toLowerCase(Locale.ROOT);
     }
 
     public Columns columns() {
@@ -99,7 +95,7 @@ public final class RunsCsv {
     private static void result(Columns.Row row, RunSummary r) {
         row.set("outcome", r.outcome()).set("ticks", r.ticks());
         for (AccidentType t : AccidentType.values()) {
-            row.set(accidentColumn(t), r.accidents().get(t.ordinal()));
+            row.set(t.column(), r.accidents().get(t.ordinal()));
         }
     }
 
@@ -162,7 +158,7 @@ public final class RunsCsv {
     private static RunSummary summary(Columns.Line row) {
         List<Long> counts = new ArrayList<>();
         for (AccidentType t : AccidentType.values()) {
-            counts.add(row.longValue(accidentColumn(t)));
+            counts.add(row.longValue(t.column()));
         }
         return new RunSummary(Outcome.valueOf(row.get("outcome")), row.longValue("ticks"), counts);
     }

@@ -3,6 +3,7 @@ package sitcov.results;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import sitcov.experiment.DriverKey;
 
 /**
  * {@code timings.csv}: the wall time of every judged map ({@code map} rows: the map's nanoseconds
@@ -16,15 +17,19 @@ public final class TimingsCsv {
     private static final String MAP = "map";
     private static final String DONE = "done";
 
-    /** The wall times read from a timings file, keyed by replication, driver and map index (or "done"). */
-    record Times(Map<String, long[]> byKey) {
+    /** The wall times read from a timings file: each map's (map and driver nanoseconds), each driver's when done. */
+    record Times(Map<MapKey, long[]> maps, Map<DriverKey, Long> done) {
         long[] map(int replication, String driver, int mapIndex) {
-            return byKey.getOrDefault(key(replication, driver, Integer.toString(mapIndex)), new long[2]);
+            return maps.getOrDefault(new MapKey(new DriverKey(replication, driver), mapIndex), new long[2]);
         }
 
         long done(int replication, String driver) {
-            return byKey.getOrDefault(key(replication, driver, DONE), new long[2])[1];
+            return done.getOrDefault(new DriverKey(replication, driver), 0L);
         }
+    }
+
+    /** One map of a driver's part of a replication. */
+    record MapKey(DriverKey driver, int mapIndex) {
     }
 
     private TimingsCsv() {
@@ -43,17 +48,14 @@ public final class TimingsCsv {
                 .set("map_index", index).set("map_nanos", mapNanos).set("driver_nanos", driverNanos).line();
     }
 
-    private static String key(int replication, String driver, String what) {
-        return replication + "/" + driver + "/" + what;
-    }
-
     /** The times of timings.csv's whole lines, read by the names of the file's header. */
     static Times read(List<String> lines, String source, String fix) {
         if (lines.isEmpty()) {
             throw new IllegalArgumentException(source + ": expected the header " + HEADER + ", found nothing; " + fix);
         }
         Columns.Layout layout = COLUMNS.layout(lines.get(0), source, fix);
-        Map<String, long[]> times = new HashMap<>();
+        Map<MapKey, long[]> maps = new HashMap<>();
+        Map<DriverKey, Long> done = new HashMap<>();
         for (int i = 1; i < lines.size(); i++) {
             try {
                 Columns.Line f = layout.split(lines.get(i));
@@ -61,13 +63,17 @@ public final class TimingsCsv {
                 if (!(event.equals(MAP) || event.equals(DONE))) {
                     throw new IllegalArgumentException("expected the event 'map' or 'done', found '" + event + "'");
                 }
-                String what = event.equals(MAP) ? f.get("map_index") : DONE;
-                times.put(key(f.integer("replication"), f.get("driver"), what),
-                        new long[] {f.longValue("map_nanos"), f.longValue("driver_nanos")});
+                DriverKey driver = new DriverKey(f.integer("replication"), f.get("driver"));
+                long[] nanos = {f.longValue("map_nanos"), f.longValue("driver_nanos")};
+                if (event.equals(MAP)) {
+                    maps.put(new MapKey(driver, f.integer("map_index")), nanos);
+                } else {
+                    done.put(driver, nanos[1]);
+                }
             } catch (IllegalArgumentException e) {
                 throw new IllegalArgumentException(source + ":" + (i + 1) + ": " + e.getMessage());
             }
         }
-        return new Times(times);
+        return new Times(maps, done);
     }
 }

@@ -54,6 +54,22 @@ public final class Columns {
             return this;
         }
 
+        /** Leaves every column not given a value blank: for tables whose rows of one kind lack another kind's columns. */
+        public Row blankRest() {
+            for (int i = 0; i < values.length; i++) {
+                if (values[i] == null) {
+                    values[i] = "";
+                }
+            }
+            return this;
+        }
+
+        /** The row without its '\n', for a file written whole from a list of lines. */
+        public String text() {
+            String line = line();
+            return line.substring(0, line.length() - 1);
+        }
+
         /** The row as a line ending in '\n'. */
         public String line() {
             for (int i = 0; i < values.length; i++) {

@@ -18,6 +18,10 @@ import sitcov.judge.Notion;
  * pair of drivers) and {@code coverage-curve.csv}.
  */
 public final class ResultsTables {
+    /** coverage-curve.csv: a point each time a driver's covered cells grew. */
+    public static final Columns CURVE =
+            Columns.of("driver", "replication", "candidates", "maps_run", "ticks", "cells_covered");
+
     private final ExperimentConfig config;
     private final Summary summary;
 
@@ -57,7 +61,7 @@ public final class ResultsTables {
                     for (int f = 0; f < perFault.length; f++) {
                         row.set(faultColumn(summary.faults().get(f)), share(perFault[f]));
                     }
-                    rows.add(line(row));
+                    rows.add(row.text());
                 }
             }
         }
@@ -66,12 +70,6 @@ public final class ResultsTables {
 
     private static String share(double v) {
         return String.format(Locale.ROOT, "%.4f", v);
-    }
-
-    /** A row as these tables hold it: without its '\n' (they are written whole, line by line). */
-    private static String line(Columns.Row row) {
-        String l = row.line();
-        return l.substring(0, l.length() - 1);
     }
 
     /**
@@ -107,7 +105,7 @@ public final class ResultsTables {
                         row.set(difference(drivers.get(i), drivers.get(j)), share(mean[i][f] - mean[j][f]));
                     }
                 }
-                rows.add(line(row));
+                rows.add(row.text());
             }
         }
         return rows;
@@ -119,12 +117,13 @@ public final class ResultsTables {
 
     public List<String> curve() {
         List<String> rows = new ArrayList<>();
-        rows.add("driver,replication,candidates,maps_run,ticks,cells_covered");
+        rows.add(CURVE.header());
         for (ReplicationResult r : summary.results()) {
             for (DriverRun d : r.drivers()) {
                 for (CurvePoint p : CurvePoint.of(r.replication(), d)) {
-                    rows.add(p.driver() + "," + p.replication() + "," + p.candidates() + "," + p.mapsRun() + "," + p.ticks()
-                            + "," + p.cellsCovered());
+                    rows.add(CURVE.row().set("driver", p.driver()).set("replication", p.replication())
+                            .set("candidates", p.candidates()).set("maps_run", p.mapsRun()).set("ticks", p.ticks())
+                            .set("cells_covered", p.cellsCovered()).text());
                 }
             }
         }

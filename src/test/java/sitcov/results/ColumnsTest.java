@@ -52,4 +52,10 @@ class ColumnsTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> layout.split("2,random"));
         assertEquals("expected 3 columns, found 2", e.getMessage());
     }
+
+    @Test
+    void aRowOfAKindThatLacksSomeColumnsLeavesThemBlankOnlyWhenAskedTo() {
+        assertEquals("2,,", TABLE.row().set("replication", 2).blankRest().text());
+        assertThrows(IllegalStateException.class, () -> TABLE.row().set("replication", 2).text());
+    }
 }

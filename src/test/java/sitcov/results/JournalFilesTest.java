@@ -41,6 +41,7 @@ class JournalFilesTest {
         assertEquals(1, JournalFiles.read(dir, manifest).finished().size());
         // As an older sitcov without cells_covered would have written it: header and rows without it, each row checked.
         JournalCheck check = JournalCheck.of(manifest);
+        assertTrue(check.active(), "the folder's rows carry checks");
         Path drivers = dir.resolve(ResultsFolder.DRIVERS);
         List<String> lines = Files.readAllLines(drivers);
         int at = List.of(lines.get(0).split(",")).indexOf("cells_covered");

@@ -11,6 +11,7 @@ import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.Measure;
 import sitcov.experiment.ReplicationResult;
 import sitcov.faults.Fault;
+import sitcov.judge.Notion;
 import sitcov.stats.Bootstrap;
 import sitcov.stats.ConfidenceInterval;
 import sitcov.stats.Descriptive;
@@ -337,7 +338,7 @@ public final class Comparison {
         double[] v = new double[results.size()];
         for (int r = 0; r < v.length; r++) {
             ReplicationResult rep = results.get(r);
-            Metrics m = summary.metrics(rep.replication(), driver, false);
+            Metrics m = summary.metrics(rep.replication(), driver, Notion.DIFFERENTIAL);
             v[r] = m.value(measure, Discovery.of(rep.of(driver), summary.faults()).area(
                     rep.drivers().stream().mapToLong(d -> d.spend().ticks()).min().orElse(0)));
         }

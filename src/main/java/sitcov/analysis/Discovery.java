@@ -5,6 +5,7 @@ import java.util.List;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.MapRun;
 import sitcov.faults.Fault;
+import sitcov.judge.Notion;
 
 /**
  * Faults found against compute spent, for one driver in one replication, under the differential
@@ -37,7 +38,7 @@ public final class Discovery {
         for (MapRun map : run.maps()) {
             ticks += map.ticks();
             for (int f = 0; f < faults.size(); f++) {
-                if (ticksAt[f] == NEVER && map.faults().get(f).found(false)) {
+                if (ticksAt[f] == NEVER && map.faults().get(f).found(Notion.DIFFERENTIAL)) {
                     ticksAt[f] = ticks;
                     // a built situation (candidate -1) costs no candidate: count the ones drawn so far
                     candidatesAt[f] = Math.max(0, map.candidate() + 1);

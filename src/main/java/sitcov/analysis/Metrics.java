@@ -5,6 +5,7 @@ import sitcov.experiment.MapRun;
 import sitcov.experiment.Measure;
 import sitcov.faults.Fault;
 import sitcov.judge.FaultOutcome;
+import sitcov.judge.Notion;
 
 /**
  * The paper's measures over the maps one method ran in one replication (§5.1 of the paper), under
@@ -43,7 +44,7 @@ public record Metrics(int maps, int cells, double methodPropFault, double propMa
         };
     }
 
-    public static Metrics of(List<MapRun> runs, List<Fault> faults, boolean paperNotion) {
+    public static Metrics of(List<MapRun> runs, List<Fault> faults, Notion notion) {
         int n = runs.size();
         int k = faults.size();
         int[] found = new int[k];
@@ -56,7 +57,7 @@ public record Metrics(int maps, int cells, double methodPropFault, double propMa
                 if (v.fault() != faults.get(f)) {
                     throw new IllegalArgumentException("faults of map " + run.map().text() + " are not in fault order");
                 }
-                boolean hit = v.found(paperNotion);
+                boolean hit = v.found(notion);
                 if (hit) {
                     found[f]++;
                     onMap++;

@@ -8,6 +8,7 @@ import sitcov.experiment.MapRun;
 import sitcov.experiment.Measure;
 import sitcov.experiment.ReplicationResult;
 import sitcov.faults.Fault;
+import sitcov.judge.Notion;
 
 /**
  * Two drivers of a comparison, replication by replication, as they are compared: under the ticks
@@ -54,7 +55,7 @@ final class PairedReplications {
     private void record(int r, DriverRun run, long horizon, BudgetKind budget, List<Fault> faults, double[][] measures,
                         long[][] found, long[] maps) {
         List<MapRun> compared = budget == BudgetKind.TICKS ? within(run.maps(), horizon) : run.maps();
-        Metrics m = Metrics.of(compared, faults, false);
+        Metrics m = Metrics.of(compared, faults, Notion.DIFFERENTIAL);
         double area = Discovery.of(run, faults).area(horizon);
         for (Measure measure : Measure.values()) {
             measures[measure.ordinal()][r] = m.value(measure, area);
@@ -62,7 +63,7 @@ final class PairedReplications {
         maps[r] = compared.size();
         for (MapRun map : compared) {
             for (int f = 0; f < faults.size(); f++) {
-                found[f][r] += map.faults().get(f).found(false) ? 1 : 0;
+                found[f][r] += map.faults().get(f).found(Notion.DIFFERENTIAL) ? 1 : 0;
             }
         }
     }

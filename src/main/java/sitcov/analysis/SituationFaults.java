@@ -10,6 +10,7 @@ import sitcov.experiment.DriverRun;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.ReplicationResult;
 import sitcov.faults.Fault;
+import sitcov.judge.Notion;
 
 /**
  * Situations against faults: which maps of each coverage cell found each fault (differential
@@ -66,7 +67,7 @@ public final class SituationFaults {
         for (int m = 0; m < maps.size(); m++) {
             cells[m] = maps.get(m).cell();
             for (int f = 0; f < faults.size(); f++) {
-                found[m][f] = maps.get(m).faults().get(f).found(false);
+                found[m][f] = maps.get(m).faults().get(f).found(Notion.DIFFERENTIAL);
             }
         }
         return new SituationFaults(List.copyOf(faults), cells, found);

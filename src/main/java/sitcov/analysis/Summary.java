@@ -4,11 +4,13 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import sitcov.experiment.DriverKey;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.ReplicationResult;
 import sitcov.faults.Fault;
+import sitcov.judge.Notion;
 
 /**
  * The paper's measures of an experiment, computed once: per replication, driver and detection
@@ -17,7 +19,7 @@ import sitcov.faults.Fault;
  */
 public final class Summary {
     /** The means over replications of one driver under one notion; {@code perFault} in fault id order. */
-    public record Mean(String driver, boolean paperNotion, double maps, double cells, double methodPropFault,
+    public record Mean(String driver, Notion notion, double maps, double cells, double methodPropFault,
                        double propMapAllFault, double avgMapFault, double[] perFault) {
         public Mean {
             perFault = perFault.clone();
@@ -32,7 +34,11 @@ public final class Summary {
     private final List<Fault> faults;
     private final List<String> drivers;
     private final List<ReplicationResult> results;
-    private final Map<String, Metrics> metrics = new LinkedHashMap<>();
+    /** The metrics of each replication, driver and notion. */
+    private final Map<Key, Metrics> metrics = new LinkedHashMap<>();
+
+    private record Key(DriverKey driver, Notion notion) {
+    }
 
     public Summary(ExperimentConfig config, List<ReplicationResult> results) {
         this.faults = config.faultList();
@@ -40,15 +46,11 @@ public final class Summary {
         this.results = List.copyOf(results);
         for (ReplicationResult r : results) {
             for (DriverRun d : r.drivers()) {
-                for (boolean paper : new boolean[] {false, true}) {
-                    metrics.put(key(r.replication(), d.driver(), paper), Metrics.of(d.maps(), faults, paper));
+                for (Notion notion : Notion.values()) {
+                    metrics.put(new Key(new DriverKey(r.replication(), d.driver()), notion), Metrics.of(d.maps(), faults, notion));
                 }
             }
         }
-    }
-
-    private static String key(int replication, String driver, boolean paper) {
-        return replication + "/" + driver + "/" + paper;
     }
 
     public List<Fault> faults() {
@@ -63,8 +65,8 @@ public final class Summary {
         return results;
     }
 
-    public Metrics metrics(int replication, String driver, boolean paperNotion) {
-        Metrics m = metrics.get(key(replication, driver, paperNotion));
+    public Metrics metrics(int replication, String driver, Notion notion) {
+        Metrics m = metrics.get(new Key(new DriverKey(replication, driver), notion));
         if (m == null) {
             throw new IllegalArgumentException("no results of driver " + driver + " in replication " + replication);
         }
@@ -88,10 +90,10 @@ public final class Summary {
     }
 
     /** The means over every replication of one driver under one notion. */
-    public Mean mean(String driver, boolean paperNotion) {
+    public Mean mean(String driver, Notion notion) {
         List<Metrics> all = new ArrayList<>();
         for (ReplicationResult r : results) {
-            all.add(metrics(r.replication(), driver, paperNotion));
+            all.add(metrics(r.replication(), driver, notion));
         }
         int n = Math.max(1, all.size());
         double[] perFault = new double[faults.size()];
@@ -114,6 +116,6 @@ public final class Summary {
         for (int f = 0; f < perFault.length; f++) {
             perFault[f] /= n;
         }
-        return new Mean(driver, paperNotion, maps / n, cells / n, prop / n, allFault / n, avg / n, perFault);
+        return new Mean(driver, notion, maps / n, cells / n, prop / n, allFault / n, avg / n, perFault);
     }
 }

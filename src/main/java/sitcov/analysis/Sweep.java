@@ -6,6 +6,7 @@ import sitcov.experiment.DriverRun;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.PlannedReplication;
 import sitcov.experiment.ReplicationResult;
+import sitcov.judge.Notion;
 
 /**
  * The paper's effort sweep (Fig. 4): each driver at several candidate budgets, several map sets
@@ -28,8 +29,8 @@ public final class Sweep {
         for (ReplicationResult r : summary.results()) {
             PlannedReplication p = plan.get(r.replication());
             for (DriverRun d : r.drivers()) {
-                Metrics m = summary.metrics(r.replication(), d.driver(), false);
-                Metrics q = summary.metrics(r.replication(), d.driver(), true);
+                Metrics m = summary.metrics(r.replication(), d.driver(), Notion.DIFFERENTIAL);
+                Metrics q = summary.metrics(r.replication(), d.driver(), Notion.PAPER);
                 points.add(new Point(p.sweepBudget(), p.set(), d.driver(), m.maps(), m.cells(),
                         (int) Math.round(m.methodPropFault() * k), (int) Math.round(q.methodPropFault() * k),
                         m.avgMapFault(), q.avgMapFault()));

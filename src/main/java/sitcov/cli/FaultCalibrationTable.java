@@ -71,22 +71,12 @@ final class FaultCalibrationTable {
         Proportion p = new Proportion(found, maps);
         String ci = String.format(Locale.ROOT, "[%.1f, %.1f]", 100 * p.wilsonLow(), 100 * p.wilsonHigh());
         String types = by.isEmpty() ? "-" : by.entrySet().stream()
-                .map(e -> shortName(e.getKey()) + " " + e.getValue()).collect(Collectors.joining(", "));
+                .map(e -> e.getKey().word() + " " + e.getValue()).collect(Collectors.joining(", "));
         out.printf(Locale.ROOT, "%3d  %-34s %7.1f%% %8.1f%% %6.1f%%  %-15s %6.1f%%  %-60s  %s%n", fault.id(), fault.label(),
                 pct(reached), pct(effective), 100 * p.share(), ci, pct(paper), types, example < 0 ? "-" : example);
     }
 
     private double pct(int count) {
         return 100.0 * count / maps;
-    }
-
-    private static String shortName(AccidentType type) {
-        return switch (type) {
-            case CLASHWITHOBSTACLE -> "obstacle";
-            case CLASHWITHOTHERCAR -> "car";
-            case LEAVEROAD -> "leaveroad";
-            case CROSSCENTRELINE -> "centreline";
-            case TIMEOUT -> "timeout";
-        };
     }
 }

@@ -6,6 +6,7 @@ import java.util.Locale;
 import sitcov.analysis.Summary;
 import sitcov.analysis.Sweep;
 import sitcov.experiment.ExperimentConfig;
+import sitcov.judge.Notion;
 
 /** The table printed at the end of {@code run} and {@code merge}: the means of the {@link Summary}. */
 final class SummaryTable {
@@ -27,16 +28,16 @@ final class SummaryTable {
         out.printf(Locale.ROOT, "  %-" + width + "s %-13s %8s %8s %18s %19s %14s%n", "driver", "notion", "maps", "cells",
                 "method-prop-fault", "prop-map-all-fault", "avg-map-fault");
         for (String driver : config.drivers()) {
-            for (boolean paper : new boolean[] {false, true}) {
-                Summary.Mean m = summary.mean(driver, paper);
+            for (Notion notion : Notion.values()) {
+                Summary.Mean m = summary.mean(driver, notion);
                 out.printf(Locale.ROOT, "  %-" + width + "s %-13s %8.1f %8.1f %18.3f %19.3f %14.2f%n", driver,
-                        paper ? "paper" : "differential", m.maps(), m.cells(), m.methodPropFault(), m.propMapAllFault(),
+                        notion.key(), m.maps(), m.cells(), m.methodPropFault(), m.propMapAllFault(),
                         m.avgMapFault());
             }
         }
         int seen = summary.cellsSeen();
         out.printf(Locale.ROOT, "  cells: of the grid's %d, %d were seen by some driver in some replication (coverage of those:"
                 + " %s)%n", config.grid().cells(), seen, String.join(", ", config.drivers().stream().map(d -> String.format(
-                        Locale.ROOT, "%s %.1f %%", d, seen == 0 ? 0 : 100 * summary.mean(d, false).cells() / seen)).toList()));
+                        Locale.ROOT, "%s %.1f %%", d, seen == 0 ? 0 : 100 * summary.mean(d, Notion.DIFFERENTIAL).cells() / seen)).toList()));
     }
 }

@@ -7,6 +7,7 @@ import java.util.Map;
 import sitcov.experiment.MapRun;
 import sitcov.faults.Fault;
 import sitcov.judge.FaultOutcome;
+import sitcov.judge.Notion;
 
 /**
  * Which elites a search edits more often: all alike (coverage-search), or those whose maps found
@@ -54,7 +55,7 @@ interface ElitePreference {
 
         @Override
         public void ran(int cell, MapRun run) {
-            List<Fault> found = run.faults().stream().filter(f -> f.found(false)).map(FaultOutcome::fault).toList();
+            List<Fault> found = run.faults().stream().filter(f -> f.found(Notion.DIFFERENTIAL)).map(FaultOutcome::fault).toList();
             foundIn.put(cell, found);
             found.forEach(f -> finds.merge(f, 1, Integer::sum));
         }

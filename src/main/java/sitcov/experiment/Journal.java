@@ -34,22 +34,18 @@ public final class Journal {
         }
     }
 
-    private final Map<String, List<Entry>> maps = new HashMap<>();
-    private final Map<String, Finished> finished = new HashMap<>();
+    private final Map<DriverKey, List<Entry>> maps = new HashMap<>();
+    private final Map<DriverKey, Finished> finished = new HashMap<>();
     private int size;
 
     public static Journal empty() {
         return new Journal();
     }
 
-    private static String key(int replication, String driver) {
-        return replication + "/" + driver;
-    }
-
     /** Adds the next map of its driver and replication; maps must arrive in order. */
     public void add(Entry entry) {
         MapRun run = entry.run();
-        List<Entry> list = maps.computeIfAbsent(key(run.replication(), run.driver()), k -> new ArrayList<>());
+        List<Entry> list = maps.computeIfAbsent(DriverKey.of(run), k -> new ArrayList<>());
         if (run.mapIndex() != list.size()) {
             throw new IllegalArgumentException("map " + run.mapIndex() + " of driver " + run.driver() + " in replication "
                     + run.replication() + " follows " + list.size() + " maps; the journal has a gap");
@@ -59,18 +55,18 @@ public final class Journal {
     }
 
     public void add(Finished f) {
-        if (finished.putIfAbsent(key(f.spend().replication(), f.spend().driver()), f) != null) {
+        if (finished.putIfAbsent(DriverKey.of(f.spend()), f) != null) {
             throw new IllegalArgumentException("driver " + f.spend().driver() + " finished replication "
                     + f.spend().replication() + " twice");
         }
     }
 
     public List<Entry> maps(int replication, String driver) {
-        return maps.getOrDefault(key(replication, driver), List.of());
+        return maps.getOrDefault(new DriverKey(replication, driver), List.of());
     }
 
     public Optional<Finished> finished(int replication, String driver) {
-        return Optional.ofNullable(finished.get(key(replication, driver)));
+        return Optional.ofNullable(finished.get(new DriverKey(replication, driver)));
     }
 
     /** Every journaled map, in no particular order. */

@@ -2,6 +2,7 @@ package sitcov.experiment;
 
 import java.util.List;
 import sitcov.judge.FaultOutcome;
+import sitcov.judge.Notion;
 import sitcov.judge.RunSummary;
 
 /**
@@ -22,7 +23,7 @@ public record MapRun(int replication, String driver, int mapIndex, int candidate
     }
 
     /** Faults found on this map, by the differential oracle or by the paper's notion. */
-    public long faultsFound(boolean paperNotion) {
-        return faults.stream().filter(f -> f.found(paperNotion)).count();
+    public long faultsFound(Notion notion) {
+        return faults.stream().filter(f -> f.found(notion)).count();
     }
 }

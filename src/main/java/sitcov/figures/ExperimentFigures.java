@@ -19,6 +19,7 @@ import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.Journal;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.ReplicationResult;
+import sitcov.judge.Notion;
 import sitcov.render.MapRenderer;
 import sitcov.results.ResultsFolder;
 
@@ -45,23 +46,22 @@ public final class ExperimentFigures {
         Graphics2D g = graphics(image);
         title(g, "Faults found per map, by driver (" + config.name() + ", master seed " + config.masterSeed() + ", "
                 + summary.results().size() + " replications)");
-        String[] notions = {"differential oracle (new accident)", "paper's notion (any accident)"};
-        for (int notion = 0; notion < 2; notion++) {
+        for (Notion notion : Notion.values()) {
             double[][] share = new double[n][k + 1];
             double top = 0;
             for (int d = 0; d < n; d++) {
                 String driver = drivers.get(d);
                 List<MapRun> runs = summary.results().stream().flatMap(r -> r.of(driver).maps().stream()).toList();
                 for (MapRun run : runs) {
-                    share[d][(int) run.faultsFound(notion == 1)] += 1.0 / Math.max(1, runs.size());
+                    share[d][(int) run.faultsFound(notion)] += 1.0 / Math.max(1, runs.size());
                 }
                 for (double s : share[d]) {
                     top = Math.max(top, s);
                 }
             }
-            Chart chart = new Chart(g, 80 + notion * 480, 80, 380, 260, Axis.steps(1, k + 1),
+            Chart chart = new Chart(g, 80 + notion.ordinal() * 480, 80, 380, 260, Axis.steps(1, k + 1),
                     Axis.upTo(Math.min(1, top)).padded());
-            chart.axes(notions[notion], "faults found on the map (of " + k + ")", "share of maps");
+            chart.axes(notion.label(), "faults found on the map (of " + k + ")", "share of maps");
             double width = 0.8 / n;
             for (int f = 0; f <= k; f++) {
                 for (int d = 0; d < n; d++) {

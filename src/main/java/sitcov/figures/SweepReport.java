@@ -13,6 +13,7 @@ import java.util.Locale;
 import sitcov.analysis.Summary;
 import sitcov.analysis.Sweep;
 import sitcov.experiment.ExperimentConfig;
+import sitcov.judge.Notion;
 import sitcov.render.MapRenderer;
 import sitcov.results.OutputFile;
 import sitcov.results.ResultsFolder;
@@ -56,7 +57,7 @@ public final class SweepReport {
                 maxY = Math.max(maxY, v);
             }
             Chart chart = new Chart(g, 80 + panel * 480, 80, 380, 260, Axis.counts(maxX).padded(), Axis.upTo(Math.max(1, maxY)).padded());
-            chart.axes(paper ? "paper's notion (any accident)" : "differential oracle (new accident)",
+            chart.axes((paper ? Notion.PAPER : Notion.DIFFERENTIAL).label(),
                     "cells covered (of " + config.grid().cells() + ")", "avg-map-fault");
             double[] fit = Sweep.regression(x, y);
             g.setColor(new Color(200, 40, 40));

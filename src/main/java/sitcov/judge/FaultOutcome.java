@@ -21,7 +21,7 @@ public record FaultOutcome(Fault fault, RunSummary run, boolean reached, boolean
      * (reached) and the run had an accident (§5.2). Folders written before the notion required
      * {@code reached} hold any accident in {@code paperFound}; requiring it here reads them alike.
      */
-    public boolean found(boolean paperNotion) {
-        return paperNotion ? reached && paperFound : detection.found();
+    public boolean found(Notion notion) {
+        return notion == Notion.PAPER ? reached && paperFound : detection.found();
     }
 }

@@ -12,6 +12,7 @@ import sitcov.faults.Fault;
 import sitcov.judge.FaultVerdict;
 import sitcov.judge.JudgedMap;
 import sitcov.judge.MapRunner;
+import sitcov.judge.Notion;
 import sitcov.results.ResultsFolder;
 import sitcov.results.ResultsRows;
 
@@ -34,7 +35,7 @@ public final class ReplayGallery {
         List<Runnable> pictures = new ArrayList<>();
         for (int f = 0; f < faults.size(); f++) {
             for (MapRun run : inOrder) {
-                if (run.faults().get(f).found(false)) {
+                if (run.faults().get(f).found(Notion.DIFFERENTIAL)) {
                     Fault fault = faults.get(f);
                     pictures.add(() -> {
                         try {

@@ -67,7 +67,7 @@ final class RunCaption {
         List<String> counts = new ArrayList<>();
         for (Map.Entry<AccidentType, Long> e : result.countsByType().entrySet()) {
             if (e.getValue() > 0) {
-                counts.add(e.getValue() + " " + (compact ? shortName(e.getKey()) : e.getKey()));
+                counts.add(e.getValue() + " " + (compact ? e.getKey().label() : e.getKey()));
             }
         }
         if (!counts.isEmpty()) {
@@ -117,19 +117,9 @@ final class RunCaption {
         x = name(compact ? "car, at end" : FOOTPRINTS, x + 2 * sym + 4 + gap, baseline, fm, gap);
         for (AccidentType type : AccidentType.values()) {
             marks.marker(type, x + sym / 2.0, mid, sym / 2.0);
-            x = name(compactness >= 1 ? shortName(type) : type.name(), x + sym + gap, baseline, fm, gap);
+            x = name(compactness >= 1 ? type.label() : type.name(), x + sym + gap, baseline, fm, gap);
         }
         return x;
-    }
-
-    private static String shortName(AccidentType type) {
-        return switch (type) {
-            case CLASHWITHOBSTACLE -> "obstacle";
-            case CLASHWITHOTHERCAR -> "other car";
-            case LEAVEROAD -> "off road";
-            case CROSSCENTRELINE -> "centre line";
-            case TIMEOUT -> "timeout";
-        };
     }
 
     private int name(String text, int x, int baseline, FontMetrics fm, int gap) {

@@ -15,6 +15,7 @@ import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ReplicationResult;
 import sitcov.experiment.SeedPlan;
 import sitcov.figures.StatsFigures;
+import sitcov.results.Columns;
 import sitcov.results.OutputFile;
 import sitcov.results.ResultsFolder;
 import sitcov.results.StatsCsv;
@@ -29,6 +30,10 @@ import sitcov.verdict.VerdictText;
 final class AnalysisFiles {
     /** Random deals of maps to cells for the uniformity test: p-values down to 1/201. */
     static final int DEALS = 200;
+    static final Columns DISCOVERY = Columns.of("driver", "replication", "fault", "ticks_at_first_find",
+            "candidates_at_first_find", "ticks_spent");
+    static final Columns UNIFORMITY = Columns.of("fault", "maps", "found", "explained_by_cell", "explained_by_chance",
+            "p_permutation");
 
     private AnalysisFiles() {
     }
@@ -49,15 +54,17 @@ final class AnalysisFiles {
 
     static List<String> discovery(Summary summary) {
         List<String> rows = new ArrayList<>();
-        rows.add("driver,replication,fault,ticks_at_first_find,candidates_at_first_find,ticks_spent");
+        rows.add(DISCOVERY.header());
         for (ReplicationResult r : summary.results()) {
             for (DriverRun d : r.drivers()) {
                 Discovery found = Discovery.of(d, summary.faults());
                 for (int f = 0; f < summary.faults().size(); f++) {
                     boolean never = found.ticksAtFirst(f) == Discovery.NEVER;
-                    rows.add(d.driver() + "," + r.replication() + "," + summary.faults().get(f).id() + ","
-                            + (never ? "" : found.ticksAtFirst(f)) + "," + (never ? "" : found.candidatesAtFirst(f)) + ","
-                            + found.ticksSpent());
+                    rows.add(DISCOVERY.row().set("driver", d.driver()).set("replication", r.replication())
+                            .set("fault", summary.faults().get(f).id())
+                            .set("ticks_at_first_find", never ? "" : found.ticksAtFirst(f))
+                            .set("candidates_at_first_find", never ? "" : found.candidatesAtFirst(f))
+                            .set("ticks_spent", found.ticksSpent()).text());
                 }
             }
         }
@@ -66,26 +73,33 @@ final class AnalysisFiles {
 
     static List<String> cellFaults(SituationFaults situations) {
         List<String> rows = new ArrayList<>();
-        StringBuilder header = new StringBuilder("cell,maps");
-        situations.faults().forEach(f -> header.append(",found_fault_").append(f.id()));
-        rows.add(header.toString());
+        List<String> names = new ArrayList<>(List.of("cell", "maps"));
+        situations.faults().forEach(f -> names.add("found_fault_" + f.id()));
+        Columns columns = new Columns(names);
+        rows.add(columns.header());
         for (Map.Entry<Integer, Integer> e : situations.mapsOfCell().entrySet()) {
-            StringBuilder row = new StringBuilder(e.getKey() + "," + e.getValue());
-            for (int n : situations.foundIn(e.getKey())) {
-                row.append(',').append(n);
+            Columns.Row row = columns.row().set("cell", e.getKey()).set("maps", e.getValue());
+            int[] found = situations.foundIn(e.getKey());
+            for (int f = 0; f < found.length; f++) {
+                row.set(names.get(2 + f), found[f]);
             }
-            rows.add(row.toString());
+            rows.add(row.text());
         }
         return rows;
     }
 
     static List<String> uniformity(List<SituationFaults.Uniformity> tests) {
         List<String> rows = new ArrayList<>();
-        rows.add("fault,maps,found,explained_by_cell,explained_by_chance,p_permutation");
+        rows.add(UNIFORMITY.header());
         for (SituationFaults.Uniformity u : tests) {
-            rows.add(String.format(Locale.ROOT, "%d,%d,%d,%.6f,%.6f,%.6f", u.fault().id(), u.maps(), u.found(),
-                    u.explained(), u.byChance(), u.p()));
+            rows.add(UNIFORMITY.row().set("fault", u.fault().id()).set("maps", u.maps()).set("found", u.found())
+                    .set("explained_by_cell", sixPlaces(u.explained())).set("explained_by_chance", sixPlaces(u.byChance()))
+                    .set("p_permutation", sixPlaces(u.p())).text());
         }
         return rows;
+    }
+
+    private static String sixPlaces(double v) {
+        return String.format(Locale.ROOT, "%.6f", v);
     }
 }

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapRun;
+import sitcov.judge.Notion;
 import sitcov.render.ReplayGallery;
 import sitcov.results.ResultsFolder;
 
@@ -43,7 +44,7 @@ final class ReportFaultMaps {
             for (int m = 0; m < inOrder.size(); m++) {
                 MapRun run = inOrder.get(m);
                 var outcome = run.faults().get(f);
-                if (outcome.found(false)) {
+                if (outcome.found(Notion.DIFFERENTIAL)) {
                     total++;
                     if (found.size() < MAPS_PER_FAULT) {
                         int row = m * perMap + f + 2;

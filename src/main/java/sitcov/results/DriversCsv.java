@@ -7,29 +7,32 @@ import sitcov.experiment.StopReason;
 
 /** {@code drivers.csv}: what each driver spent in each replication and why it stopped; one row each. */
 public final class DriversCsv {
-    public static final String HEADER = "replication,driver,candidates,maps_run,ticks,cells_covered,stopped_by";
+    public static final Columns COLUMNS =
+            Columns.of("replication", "driver", "candidates", "maps_run", "ticks", "cells_covered", "stopped_by");
+    public static final String HEADER = COLUMNS.header();
 
     private DriversCsv() {
     }
 
     static String row(DriverSpend s) {
-        return s.replication() + "," + s.driver() + "," + s.candidates() + "," + s.mapsRun() + "," + s.ticks() + ","
-                + s.cellsCovered() + "," + s.stoppedBy().key() + "\n";
+        return COLUMNS.row().set("replication", s.replication()).set("driver", s.driver()).set("candidates", s.candidates())
+                .set("maps_run", s.mapsRun()).set("ticks", s.ticks()).set("cells_covered", s.cellsCovered())
+                .set("stopped_by", s.stoppedBy().key()).line();
     }
 
-    static List<DriverSpend> read(List<String> lines, String source) {
-        if (lines.isEmpty() || !lines.get(0).equals(HEADER)) {
-            throw new IllegalArgumentException(source + ": expected the header " + HEADER);
+    /** The rows of drivers.csv's whole lines, read by the names of the file's header. */
+    static List<DriverSpend> read(List<String> lines, String source, String fix) {
+        if (lines.isEmpty()) {
+            throw new IllegalArgumentException(source + ": expected the header " + HEADER + ", found nothing; " + fix);
         }
+        Columns.Layout layout = COLUMNS.layout(lines.get(0), source, fix);
         List<DriverSpend> spends = new ArrayList<>();
         for (int i = 1; i < lines.size(); i++) {
-            String[] f = lines.get(i).split(",", -1);
             try {
-                if (f.length != 7) {
-                    throw new IllegalArgumentException("expected 7 columns, found " + f.length);
-                }
-                spends.add(new DriverSpend(Integer.parseInt(f[0]), f[1], Integer.parseInt(f[2]), Integer.parseInt(f[3]),
-                        Long.parseLong(f[4]), Integer.parseInt(f[5]), StopReason.ofKey(f[6])));
+                Columns.Line f = layout.split(lines.get(i));
+                spends.add(new DriverSpend(f.integer("replication"), f.get("driver"), f.integer("candidates"),
+                        f.integer("maps_run"), f.longValue("ticks"), f.integer("cells_covered"),
+                        StopReason.ofKey(f.get("stopped_by"))));
             } catch (IllegalArgumentException e) {
                 throw new IllegalArgumentException(source + ":" + (i + 1) + ": " + e.getMessage());
             }

@@ -39,7 +39,7 @@ public final class JournalFiles {
         RunsCsv runsCsv = new RunsCsv(config);
         Path runsFile = folder.resolve(ResultsFolder.RUNS);
         JournalCheck.Checked runLines = lines(folder, ResultsFolder.RUNS, check, manifest.complete(), fix);
-        List<MapRun> runs = runsCsv.read(runLines.lines(), runsFile.toString());
+        List<MapRun> runs = runsCsv.read(runLines.lines(), runsFile.toString(), fix);
         int perMap = 1 + config.faultList().size();
         if (manifest.complete() && runLines.lines().size() != 1 + runs.size() * perMap) {
             throw new IllegalArgumentException(runsFile + ":" + (2 + runs.size() * perMap) + ": a map's block of rows is cut"
@@ -49,9 +49,9 @@ public final class JournalFiles {
             checkSituations(folder, runs, runLines.situationChecks(), perMap, fix);
         }
         List<DriverSpend> spends = DriversCsv.read(lines(folder, ResultsFolder.DRIVERS, check, manifest.complete(), fix)
-                .lines(), folder.resolve(ResultsFolder.DRIVERS).toString());
+                .lines(), folder.resolve(ResultsFolder.DRIVERS).toString(), fix);
         TimingsCsv.Times times = TimingsCsv.read(lines(folder, ResultsFolder.TIMINGS, check, manifest.complete(), fix)
-                .lines(), folder.resolve(ResultsFolder.TIMINGS).toString());
+                .lines(), folder.resolve(ResultsFolder.TIMINGS).toString(), fix);
         Journal journal = Journal.empty();
         try {
             for (MapRun run : runs) {

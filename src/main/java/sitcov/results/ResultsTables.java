@@ -10,6 +10,7 @@ import sitcov.experiment.DriverRun;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ReplicationResult;
 import sitcov.faults.Fault;
+import sitcov.judge.Notion;
 
 /**
  * The tables of a comparison, from its {@link Summary}: {@code summary.csv} (the paper's measures
@@ -17,7 +18,9 @@ import sitcov.faults.Fault;
  * pair of drivers) and {@code coverage-curve.csv}.
  */
 public final class ResultsTables {
-    private static final List<String> NOTIONS = List.of("differential", "paper");
+    /** coverage-curve.csv: a point each time a driver's covered cells grew. */
+    public static final Columns CURVE =
+            Columns.of("driver", "replication", "candidates", "maps_run", "ticks", "cells_covered");
 
     private final ExperimentConfig config;
     private final Summary summary;
@@ -27,30 +30,46 @@ public final class ResultsTables {
         this.summary = summary;
     }
 
+    /** summary.csv's columns: one {@code fault_ID} column per seeded fault, in id order. */
+    public Columns summaryColumns() {
+        List<String> names = new ArrayList<>(List.of("driver", "replication", "notion", "maps_run", "cells_covered",
+                "cells_total", "cells_seen", "method_prop_fault", "prop_map_all_fault", "avg_map_fault"));
+        summary.faults().forEach(f -> names.add(faultColumn(f)));
+        return new Columns(names);
+    }
+
+    private static String faultColumn(Fault f) {
+        return "fault_" + f.id();
+    }
+
     public List<String> summary() {
+        Columns columns = summaryColumns();
         List<String> rows = new ArrayList<>();
-        StringBuilder header = new StringBuilder("driver,replication,notion,maps_run,cells_covered,cells_total,cells_seen,"
-                + "method_prop_fault,prop_map_all_fault,avg_map_fault");
-        for (Fault f : summary.faults()) {
-            header.append(",fault_").append(f.id());
-        }
-        rows.add(header.toString());
+        rows.add(columns.header());
         int seen = summary.cellsSeen();
         for (ReplicationResult r : summary.results()) {
             for (DriverRun d : r.drivers()) {
-                for (String notion : NOTIONS) {
-                    Metrics x = summary.metrics(r.replication(), d.driver(), notion.equals("paper"));
-                    StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%s,%d,%s,%d,%d,%d,%d,%.4f,%.4f,%.4f",
-                            d.driver(), r.replication(), notion, x.maps(), x.cells(), config.grid().cells(), seen,
-                            x.methodPropFault(), x.propMapAllFault(), x.avgMapFault()));
-                    for (double p : x.perFault()) {
-                        s.append(String.format(Locale.ROOT, ",%.4f", p));
+                for (Notion notion : Notion.values()) {
+                    Metrics x = summary.metrics(r.replication(), d.driver(), notion);
+                    Columns.Row row = columns.row().set("driver", d.driver()).set("replication", r.replication())
+                            .set("notion", notion.key()).set("maps_run", x.maps()).set("cells_covered", x.cells())
+                            .set("cells_total", config.grid().cells()).set("cells_seen", seen)
+                            .set("method_prop_fault", share(x.methodPropFault()))
+                            .set("prop_map_all_fault", share(x.propMapAllFault()))
+                            .set("avg_map_fault", share(x.avgMapFault()));
+                    double[] perFault = x.perFault();
+                    for (int f = 0; f < perFault.length; f++) {
+                        row.set(faultColumn(summary.faults().get(f)), share(perFault[f]));
                     }
-                    rows.add(s.toString());
+                    rows.add(row.text());
                 }
             }
         }
         return rows;
+    }
+
+    private static String share(double v) {
+        return String.format(Locale.ROOT, "%.4f", v);
     }
 
     /**
@@ -59,47 +78,52 @@ public final class ResultsTables {
      */
     public List<String> table2() {
         List<String> drivers = summary.drivers();
-        StringBuilder header = new StringBuilder("fault,name,notion");
-        for (String d : drivers) {
-            header.append(',').append(d);
-        }
+        List<String> names = new ArrayList<>(List.of("fault", "name", "notion"));
+        names.addAll(drivers);
         for (int i = 0; i < drivers.size(); i++) {
             for (int j = i + 1; j < drivers.size(); j++) {
-                header.append(',').append(drivers.get(i)).append("_minus_").append(drivers.get(j));
+                names.add(difference(drivers.get(i), drivers.get(j)));
             }
         }
+        Columns columns = new Columns(names);
         List<String> rows = new ArrayList<>();
-        rows.add(header.toString());
+        rows.add(columns.header());
         List<Fault> faults = summary.faults();
-        for (String notion : NOTIONS) {
+        for (Notion notion : Notion.values()) {
             double[][] mean = new double[drivers.size()][];
             for (int d = 0; d < drivers.size(); d++) {
-                mean[d] = summary.mean(drivers.get(d), notion.equals("paper")).perFault();
+                mean[d] = summary.mean(drivers.get(d), notion).perFault();
             }
             for (int f = 0; f < faults.size(); f++) {
-                StringBuilder s = new StringBuilder(faults.get(f).id() + "," + faults.get(f).label() + "," + notion);
-                for (double[] m : mean) {
-                    s.append(String.format(Locale.ROOT, ",%.4f", m[f]));
+                Columns.Row row = columns.row().set("fault", faults.get(f).id()).set("name", faults.get(f).label())
+                        .set("notion", notion.key());
+                for (int d = 0; d < drivers.size(); d++) {
+                    row.set(drivers.get(d), share(mean[d][f]));
                 }
                 for (int i = 0; i < drivers.size(); i++) {
                     for (int j = i + 1; j < drivers.size(); j++) {
-                        s.append(String.format(Locale.ROOT, ",%.4f", mean[i][f] - mean[j][f]));
+                        row.set(difference(drivers.get(i), drivers.get(j)), share(mean[i][f] - mean[j][f]));
                     }
                 }
-                rows.add(s.toString());
+                rows.add(row.text());
             }
         }
         return rows;
     }
 
+    private static String difference(String earlier, String later) {
+        return earlier + "_minus_" + later;
+    }
+
     public List<String> curve() {
         List<String> rows = new ArrayList<>();
-        rows.add("driver,replication,candidates,maps_run,ticks,cells_covered");
+        rows.add(CURVE.header());
         for (ReplicationResult r : summary.results()) {
             for (DriverRun d : r.drivers()) {
                 for (CurvePoint p : CurvePoint.of(r.replication(), d)) {
-                    rows.add(p.driver() + "," + p.replication() + "," + p.candidates() + "," + p.mapsRun() + "," + p.ticks()
-                            + "," + p.cellsCovered());
+                    rows.add(CURVE.row().set("driver", p.driver()).set("replication", p.replication())
+                            .set("candidates", p.candidates()).set("maps_run", p.mapsRun()).set("ticks", p.ticks())
+                            .set("cells_covered", p.cellsCovered()).text());
                 }
             }
         }

@@ -17,57 +17,86 @@ import sitcov.oracle.Outcome;
 /**
  * {@code runs.csv}: one row per simulated run, a block per judged map (its fault-free row, then one
  * row per fault in id order). Nothing timed is in it. Reading it back gives the same maps, so a
- * resumed or merged experiment is computed from exactly what an uninterrupted one writes.
+ * resumed or merged experiment is computed from exactly what an uninterrupted one writes. Its
+ * columns depend on the experiment (one per criterion of its grid); {@link #columns()} lists them,
+ * and rows are written and read by those names.
  */
 public final class RunsCsv {
-    private final ExperimentConfig config;
+    private static final String NO_FAULT = "NONE";
+    private static final String FAULT = "fault";
+    private static final String REACHED = "reached";
+    private static final String EFFECTIVE = "effective";
+    private static final String FIRST_EFFECTIVE_TICK = "first_effective_tick";
+    private static final String DETECTION = "detection";
+    private static final String NEW_ACCIDENT = "new_accident";
+    private static final String PAPER_FOUND = "paper_found";
+    /** The columns only a faulty run has: empty in the fault-free row. */
+    private static final List<String> FAULT_ONLY =
+            List.of(REACHED, EFFECTIVE, FIRST_EFFECTIVE_TICK, DETECTION, NEW_ACCIDENT, PAPER_FOUND);
+
     private final List<Fault> faults;
-    private final String header;
+    /** The columns naming the map, the same in every row of its block. */
+    private final List<String> mapColumns;
+    private final List<String> criteria;
+    private final Columns columns;
 
     public RunsCsv(ExperimentConfig config) {
-        this.config = config;
         this.faults = config.faultList();
-        StringBuilder h = new StringBuilder("replication,driver,map_index,candidate,map,external_seed,internal_seed,cell");
-        for (var c : config.grid().criteria()) {
-            h.append(',').append(c.key().replace('-', '_'));
-        }
-        h.append(",fault,outcome,ticks");
+        this.criteria = config.grid().criteria().stream().map(c -> c.key().replace('-', '_')).toList();
+        List<String> map = new ArrayList<>(List.of("replication", "driver", "map_index", "candidate", "map",
+                "external_seed", "internal_seed", "cell"));
+        map.addAll(criteria);
+        this.mapColumns = List.copyOf(map);
+        List<String> all = new ArrayList<>(mapColumns);
+        all.addAll(List.of(FAULT, "outcome", "ticks"));
         for (AccidentType t : AccidentType.values()) {
-            h.append(',').append(t.name().toLowerCase(Locale.ROOT));
+            all.add(t.column());
         }
-        h.append(",reached,effective,first_effective_tick,detection,new_accident,paper_found");
-        this.header = h.toString();
+        all.addAll(FAULT_ONLY);
+        this.columns = new Columns(all);
+    }
+
+    public Columns columns() {
+        return columns;
     }
 
     public String header() {
-        return header;
+        return columns.header();
     }
 
     /** The block of rows of one map, each ending in '\n'. */
     String block(MapRun run) {
-        StringBuilder prefix = new StringBuilder().append(run.replication()).append(',').append(run.driver()).append(',')
-                .append(run.mapIndex()).append(',').append(run.candidate()).append(',').append(run.map().text()).append(',')
-                .append(run.externalSeed()).append(',').append(run.internalSeed()).append(',').append(run.cell());
-        for (double v : run.criteria()) {
-            prefix.append(',').append(String.format(Locale.ROOT, "%.3f", v));
-        }
         StringBuilder out = new StringBuilder();
-        out.append(prefix).append(",NONE,").append(result(run.faultFree())).append(",,,,,,\n");
+        Columns.Row faultFree = mapRow(run).set(FAULT, NO_FAULT);
+        result(faultFree, run.faultFree());
+        FAULT_ONLY.forEach(c -> faultFree.set(c, ""));
+        out.append(faultFree.line());
         for (FaultOutcome f : run.faults()) {
-            out.append(prefix).append(',').append(f.fault().id()).append(',').append(result(f.run())).append(',')
-                    .append(f.reached()).append(',').append(f.effective()).append(',').append(f.firstEffectiveTick())
-                    .append(',').append(f.detection()).append(',').append(f.newAccident().map(Enum::name).orElse(""))
-                    .append(',').append(f.paperFound()).append('\n');
+            Columns.Row row = mapRow(run).set(FAULT, f.fault().id());
+            result(row, f.run());
+            row.set(REACHED, f.reached()).set(EFFECTIVE, f.effective()).set(FIRST_EFFECTIVE_TICK, f.firstEffectiveTick())
+                    .set(DETECTION, f.detection()).set(NEW_ACCIDENT, f.newAccident().map(Enum::name).orElse(""))
+                    .set(PAPER_FOUND, f.paperFound());
+            out.append(row.line());
         }
         return out.toString();
     }
 
-    private static String result(RunSummary r) {
-        StringBuilder s = new StringBuilder().append(r.outcome()).append(',').append(r.ticks());
-        for (long n : r.accidents()) {
-            s.append(',').append(n);
+    private Columns.Row mapRow(MapRun run) {
+        Columns.Row row = columns.row().set("replication", run.replication()).set("driver", run.driver())
+                .set("map_index", run.mapIndex()).set("candidate", run.candidate()).set("map", run.map().text())
+                .set("external_seed", run.externalSeed()).set("internal_seed", run.internalSeed()).set("cell", run.cell());
+        for (int c = 0; c < criteria.size(); c++) {
+            row.set(criteria.get(c), String.format(Locale.ROOT, "%.3f", run.criteria().get(c)));
         }
-        return s.toString();
+        return row;
+    }
+
+    private static void result(Columns.Row row, RunSummary r) {
+        row.set("outcome", r.outcome()).set("ticks", r.ticks());
+        for (AccidentType t : AccidentType.values()) {
+            row.set(t.column(), r.accidents().get(t.ordinal()));
+        }
     }
 
     /**
@@ -75,46 +104,49 @@ public final class RunsCsv {
      * was written) ends the reading; anything else malformed is refused, naming the line.
      */
     List<MapRun> read(String text, String source) {
-        return read(CsvLines.complete(text), source);
+        return read(CsvLines.complete(text), source, "run the experiment again into a new folder");
     }
 
-    /** The complete map blocks of runs.csv's whole lines (see {@link CsvLines}). */
-    List<MapRun> read(List<String> lines, String source) {
-        if (lines.isEmpty() || !lines.get(0).equals(header)) {
-            throw new IllegalArgumentException(source + ": expected the header of this experiment's runs.csv:\n  " + header
-                    + "\nfound:\n  " + (lines.isEmpty() ? "(nothing)" : lines.get(0)));
+    /**
+     * The complete map blocks of runs.csv's whole lines (see {@link CsvLines}), read by the names of
+     * the file's header.
+     *
+     * @param fix what the user can do about a header that does not fit this experiment
+     */
+    List<MapRun> read(List<String> lines, String source, String fix) {
+        if (lines.isEmpty()) {
+            throw new IllegalArgumentException(source + ": expected the header of this experiment's runs.csv:\n  "
+                    + header() + "\nfound nothing; " + fix);
         }
-        int criteria = config.grid().criteria().size();
-        int columns = header.split(",", -1).length;
+        Columns.Layout layout = columns.layout(lines.get(0), source, fix);
         List<MapRun> runs = new ArrayList<>();
         int i = 1;
         while (i + faults.size() < lines.size()) {
-            String[] first = lines.get(i).split(",", -1);
             int line = i + 1;
             try {
-                check(first.length == columns && first[8 + criteria].equals("NONE"), "a fault-free row (fault NONE)");
+                Columns.Line first = layout.split(lines.get(i));
+                check(first.get(FAULT).equals(NO_FAULT), "a fault-free row (fault " + NO_FAULT + ")");
                 List<Double> values = new ArrayList<>();
-                for (int c = 0; c < criteria; c++) {
-                    values.add(Double.parseDouble(first[8 + c]));
+                for (String c : criteria) {
+                    values.add(first.decimal(c));
                 }
-                RunSummary faultFree = summary(first, 9 + criteria);
+                RunSummary faultFree = summary(first);
                 List<FaultOutcome> outcomes = new ArrayList<>();
                 for (int f = 0; f < faults.size(); f++) {
                     line = i + 2 + f;
-                    String[] row = lines.get(i + 1 + f).split(",", -1);
-                    check(row.length == columns && String.join(",", java.util.Arrays.copyOf(row, 8 + criteria))
-                            .equals(String.join(",", java.util.Arrays.copyOf(first, 8 + criteria))),
+                    Columns.Line row = layout.split(lines.get(i + 1 + f));
+                    check(mapColumns.stream().allMatch(c -> row.get(c).equals(first.get(c))),
                             "a row of the same map as line " + (i + 1));
-                    check(row[8 + criteria].equals(Integer.toString(faults.get(f).id())), "fault " + faults.get(f).id());
-                    int at = 10 + criteria + AccidentType.values().length;
-                    outcomes.add(new FaultOutcome(faults.get(f), summary(row, 9 + criteria), bool(row[at + 1]),
-                            bool(row[at + 2]), Long.parseLong(row[at + 3]), Detection.valueOf(row[at + 4]),
-                            row[at + 5].isEmpty() ? Optional.empty() : Optional.of(AccidentType.valueOf(row[at + 5])),
-                            bool(row[at + 6])));
+                    check(row.get(FAULT).equals(Integer.toString(faults.get(f).id())), "fault " + faults.get(f).id());
+                    String accident = row.get(NEW_ACCIDENT);
+                    outcomes.add(new FaultOutcome(faults.get(f), summary(row), row.bool(REACHED), row.bool(EFFECTIVE),
+                            row.longValue(FIRST_EFFECTIVE_TICK), Detection.valueOf(row.get(DETECTION)),
+                            accident.isEmpty() ? Optional.empty() : Optional.of(AccidentType.valueOf(accident)),
+                            row.bool(PAPER_FOUND)));
                 }
-                runs.add(new MapRun(Integer.parseInt(first[0]), first[1], Integer.parseInt(first[2]),
-                        Integer.parseInt(first[3]), MapId.parse(first[4]), Long.parseLong(first[5]), Long.parseLong(first[6]),
-                        Integer.parseInt(first[7]), values, faultFree, outcomes));
+                runs.add(new MapRun(first.integer("replication"), first.get("driver"), first.integer("map_index"),
+                        first.integer("candidate"), MapId.parse(first.get("map")), first.longValue("external_seed"),
+                        first.longValue("internal_seed"), first.integer("cell"), values, faultFree, outcomes));
             } catch (IllegalArgumentException e) {
                 throw new IllegalArgumentException(source + ":" + line + ": " + e.getMessage());
             }
@@ -123,20 +155,12 @@ public final class RunsCsv {
         return runs;
     }
 
-    private static RunSummary summary(String[] row, int at) {
+    private static RunSummary summary(Columns.Line row) {
         List<Long> counts = new ArrayList<>();
-        for (int t = 0; t < AccidentType.values().length; t++) {
-            counts.add(Long.parseLong(row[at + 2 + t]));
+        for (AccidentType t : AccidentType.values()) {
+            counts.add(row.longValue(t.column()));
         }
-        return new RunSummary(Outcome.valueOf(row[at]), Long.parseLong(row[at + 1]), counts);
-    }
-
-    private static boolean bool(String s) {
-        return switch (s) {
-            case "true" -> true;
-            case "false" -> false;
-            default -> throw new IllegalArgumentException("expected true or false, found '" + s + "'");
-        };
+        return new RunSummary(Outcome.valueOf(row.get("outcome")), row.longValue("ticks"), counts);
     }
 
     private static void check(boolean ok, String expected) {

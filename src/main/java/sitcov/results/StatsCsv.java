@@ -17,38 +17,53 @@ import sitcov.analysis.PairedDifference;
  * own); the pooled Fisher test and odds ratio, the Mann-Whitney p and Â12 are descriptive.
  */
 public final class StatsCsv {
-    static final String HEADER = "kind,name,driver_a,driver_b,role,finding,note,replications,mean_a,mean_b,difference,"
-            + "ci_low,ci_high,spread,differing,p,p_smallest,p_adjusted,detectable_80,margin,p_tost,p_tost_adjusted,"
-            + "tost_low,tost_high,p_mann_whitney_unpaired,a12_unpaired,effect_unpaired,dispersion_a,dispersion_b,"
-            + "found_a,maps_a,found_b,maps_b,p_fisher_pooled,odds_ratio_pooled,or_low,or_high";
+    static final Columns COLUMNS = Columns.of("kind", "name", "driver_a", "driver_b", "role", "finding", "note",
+            "replications", "mean_a", "mean_b", "difference", "ci_low", "ci_high", "spread", "differing", "p", "p_smallest",
+            "p_adjusted", "detectable_80", "margin", "p_tost", "p_tost_adjusted", "tost_low", "tost_high",
+            "p_mann_whitney_unpaired", "a12_unpaired", "effect_unpaired", "dispersion_a", "dispersion_b", "found_a",
+            "maps_a", "found_b", "maps_b", "p_fisher_pooled", "odds_ratio_pooled", "or_low", "or_high");
+    static final String HEADER = COLUMNS.header();
 
     private StatsCsv() {
     }
 
+    /** The table's lines, header first; a measure's row leaves the fault columns blank, and a fault's the measure's. */
     public static List<String> rows(Comparison comparison) {
         List<String> rows = new ArrayList<>();
         rows.add(HEADER);
         for (MeasureTest m : comparison.measures()) {
             String role = m.primary() ? "primary" : m.finding().tested() ? "exploratory" : "untested";
-            rows.add(String.join(",", "measure", m.measure().key(), m.driverA(), m.driverB(), role, m.finding().key(),
-                    text(m.note()), paired(m.paired()), num(m.margin()), num(m.pTost()), num(m.pTostAdjusted()),
-                    num(m.tostLow()), num(m.tostHigh()), num(m.pMannWhitney()), num(m.a12()), m.effect().label(),
-                    ",,,,,,,,,"));
+            Columns.Row row = COLUMNS.row().set("kind", "measure").set("name", m.measure().key())
+                    .set("driver_a", m.driverA()).set("driver_b", m.driverB()).set("role", role)
+                    .set("finding", m.finding().key()).set("note", text(m.note()));
+            paired(row, m.paired());
+            row.set("margin", num(m.margin())).set("p_tost", num(m.pTost())).set("p_tost_adjusted", num(m.pTostAdjusted()))
+                    .set("tost_low", num(m.tostLow())).set("tost_high", num(m.tostHigh()))
+                    .set("p_mann_whitney_unpaired", num(m.pMannWhitney())).set("a12_unpaired", num(m.a12()))
+                    .set("effect_unpaired", m.effect().label());
+            rows.add(row.blankRest().text());
         }
         for (FaultTest f : comparison.faults()) {
             String role = f.finding().tested() ? "exploratory" : "untested";
-            rows.add(String.join(",", "fault", "fault_" + f.fault().id(), f.driverA(), f.driverB(), role, f.finding().key(),
-                    text(f.note()), paired(f.paired()), ",,,,,,,", num(f.dispersionA()), num(f.dispersionB()),
-                    Long.toString(f.foundA()), Long.toString(f.mapsA()), Long.toString(f.foundB()), Long.toString(f.mapsB()),
-                    num(f.pFisher()), num(f.oddsRatio()), num(f.oddsLow()), num(f.oddsHigh())));
+            Columns.Row row = COLUMNS.row().set("kind", "fault").set("name", "fault_" + f.fault().id())
+                    .set("driver_a", f.driverA()).set("driver_b", f.driverB()).set("role", role)
+                    .set("finding", f.finding().key()).set("note", text(f.note()));
+            paired(row, f.paired());
+            row.set("dispersion_a", num(f.dispersionA())).set("dispersion_b", num(f.dispersionB()))
+                    .set("found_a", f.foundA()).set("maps_a", f.mapsA()).set("found_b", f.foundB()).set("maps_b", f.mapsB())
+                    .set("p_fisher_pooled", num(f.pFisher())).set("odds_ratio_pooled", num(f.oddsRatio()))
+                    .set("or_low", num(f.oddsLow())).set("or_high", num(f.oddsHigh()));
+            rows.add(row.blankRest().text());
         }
         return rows;
     }
 
-    private static String paired(PairedDifference d) {
-        return String.join(",", Integer.toString(d.replications()), num(d.meanA()), num(d.meanB()),
-                num(d.difference().estimate()), num(d.difference().low()), num(d.difference().high()), num(d.spread()),
-                Integer.toString(d.differing()), num(d.p()), num(d.smallestP()), num(d.pAdjusted()), num(d.detectable()));
+    private static void paired(Columns.Row row, PairedDifference d) {
+        row.set("replications", d.replications()).set("mean_a", num(d.meanA())).set("mean_b", num(d.meanB()))
+                .set("difference", num(d.difference().estimate())).set("ci_low", num(d.difference().low()))
+                .set("ci_high", num(d.difference().high())).set("spread", num(d.spread())).set("differing", d.differing())
+                .set("p", num(d.p())).set("p_smallest", num(d.smallestP())).set("p_adjusted", num(d.pAdjusted()))
+                .set("detectable_80", num(d.detectable()));
     }
 
     /** Six significant digits, empty for NaN: what was not computed stays visibly blank. */

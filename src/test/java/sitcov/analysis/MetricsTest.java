@@ -12,6 +12,7 @@ import sitcov.experiment.MapRun;
 import sitcov.faults.Fault;
 import sitcov.judge.Detection;
 import sitcov.judge.FaultOutcome;
+import sitcov.judge.Notion;
 import sitcov.judge.RunSummary;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.Outcome;
@@ -37,7 +38,7 @@ class MetricsTest {
     void thePapersMeasuresOnAHandMadeTable() {
         // four maps, three faults: fault 12 is never found by the differential oracle
         List<MapRun> runs = List.of(map("F-F"), map("FPF"), map("---"), map("F-P"));
-        Metrics differential = Metrics.of(runs, FAULTS, false);
+        Metrics differential = Metrics.of(runs, FAULTS, Notion.DIFFERENTIAL);
         assertEquals(4, differential.maps());
         assertEquals(1, differential.cells(), "all four hand-made maps are in cell 0");
         assertEquals(2.0 / 3, differential.methodPropFault(), 1e-12);
@@ -45,7 +46,7 @@ class MetricsTest {
         assertEquals((2 + 2 + 0 + 1) / 4.0, differential.avgMapFault(), 1e-12);
         assertArrayEquals(new double[] {0.75, 0, 0.5}, differential.perFault(), 1e-12);
 
-        Metrics paper = Metrics.of(runs, FAULTS, true);
+        Metrics paper = Metrics.of(runs, FAULTS, Notion.PAPER);
         assertEquals(1, paper.methodPropFault(), 1e-12);
         assertEquals(0.25, paper.propMapAllFault(), 1e-12);
         assertEquals((2 + 3 + 0 + 2) / 4.0, paper.avgMapFault(), 1e-12);
@@ -53,7 +54,7 @@ class MetricsTest {
 
     @Test
     void noMapsGiveZeroesNotNaN() {
-        Metrics m = Metrics.of(List.of(), FAULTS, false);
+        Metrics m = Metrics.of(List.of(), FAULTS, Notion.DIFFERENTIAL);
         assertEquals(0, m.avgMapFault());
         assertEquals(0, m.propMapAllFault());
     }

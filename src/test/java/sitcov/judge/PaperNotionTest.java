@@ -21,7 +21,7 @@ class PaperNotionTest {
         assertFalse(v.activation().reached(), v.toString());
         assertTrue(v.faultyRun().hasAccident(), v.toString());
         assertFalse(v.foundByPaperNotion(), v.toString());
-        assertFalse(FaultOutcome.of(v).found(true), v.toString());
+        assertFalse(FaultOutcome.of(v).found(Notion.PAPER), v.toString());
     }
 
     @Test
@@ -30,7 +30,7 @@ class PaperNotionTest {
         assertTrue(v.activation().reached(), v.toString());
         assertTrue(v.faultyRun().hasAccident(), v.toString());
         assertTrue(v.foundByPaperNotion(), v.toString());
-        assertTrue(FaultOutcome.of(v).found(true), v.toString());
+        assertTrue(FaultOutcome.of(v).found(Notion.PAPER), v.toString());
     }
 
     @Test
@@ -41,6 +41,6 @@ class PaperNotionTest {
                 Detection.NOT_REACHED, Optional.empty(), true);
         FaultOutcome reached = new FaultOutcome(Fault.CRAWL_DOUBLE_ACCELERATION, crashed, true, false, -1,
                 Detection.REACHED_NO_EFFECT, Optional.empty(), true);
-        assertEquals(List.of(false, true), List.of(notReached.found(true), reached.found(true)));
+        assertEquals(List.of(false, true), List.of(notReached.found(Notion.PAPER), reached.found(Notion.PAPER)));
     }
 }

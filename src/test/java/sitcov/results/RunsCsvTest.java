@@ -68,6 +68,47 @@ class RunsCsvTest {
         assertTrue(e.getMessage().startsWith("runs.csv:3: "), e.getMessage());
         IllegalArgumentException header = assertThrows(IllegalArgumentException.class,
                 () -> CSV.read("method,replication\n" + block, "old/runs.csv"));
-        assertTrue(header.getMessage().contains("expected the header of this experiment's runs.csv"), header.getMessage());
+        assertTrue(header.getMessage().startsWith("old/runs.csv:1: the header lacks the columns 'driver', 'map_index'"),
+                header.getMessage());
+        assertTrue(header.getMessage().contains("has the column 'method' this sitcov does not know"), header.getMessage());
+    }
+
+    @Test
+    void aFolderWrittenBeforeAnAccidentTypeExistedIsRefusedNamingTheMissingColumn() {
+        String block = CSV.block(map(0, new MapId.Seeded(77)));
+        // An older runs.csv without the timeout column: its rows have one value fewer, in the header and every row.
+        int at = List.of(CSV.header().split(",")).indexOf("timeout");
+        String older = String.join("\n", CSV.header().replace(",timeout,", ","),
+                dropColumn(block.split("\n")[0], at), dropColumn(block.split("\n")[1], at),
+                dropColumn(block.split("\n")[2], at)) + "\n";
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> CSV.read(older, "old/runs.csv"));
+        assertTrue(e.getMessage().startsWith("old/runs.csv:1: the header lacks the column 'timeout' this sitcov reads"),
+                e.getMessage());
+    }
+
+    @Test
+    void columnsInAnotherOrderAreReadByTheirNames() {
+        MapRun run = map(0, new MapId.Seeded(77));
+        List<String> names = List.of(CSV.header().split(","));
+        int a = names.indexOf("reached");
+        int b = names.indexOf("effective");
+        // Swap two columns of equal type whose values differ in the second fault's row (true, false).
+        String swapped = String.join("\n", List.of((CSV.header() + "\n" + CSV.block(run)).split("\n")).stream()
+                .map(line -> swap(line, a, b)).toList()) + "\n";
+        assertEquals(List.of(run), CSV.read(swapped, "runs.csv"));
+    }
+
+    private static String dropColumn(String line, int at) {
+        List<String> values = new java.util.ArrayList<>(List.of(line.split(",", -1)));
+        values.remove(at);
+        return String.join(",", values);
+    }
+
+    private static String swap(String line, int a, int b) {
+        String[] values = line.split(",", -1);
+        String t = values[a];
+        values[a] = values[b];
+        values[b] = t;
+        return String.join(",", values);
     }
 }

@@ -27,9 +27,16 @@ public record CsvTable(List<String> header, List<List<String>> rows) {
         return rows.isEmpty();
     }
 
-    /** The value of {@code column} in {@code row}; empty where the file has no such column. */
+    /**
+     * The value of {@code column} in {@code row}. A column the file's header lacks is a reader out of
+     * step with the table's writer (the report reads files it has just written), so it fails loudly
+     * rather than showing an empty cell.
+     */
     public String get(List<String> row, String column) {
         int i = header.indexOf(column);
-        return i < 0 || i >= row.size() ? "" : row.get(i);
+        if (i < 0) {
+            throw new IllegalStateException("the table has no column '" + column + "' (its header: " + header + ")");
+        }
+        return i >= row.size() ? "" : row.get(i);
     }
 }

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Proves a restructuring changed no output (issue 27): record what a build writes, then compare two records.
 #
-#   scripts/byte-identical.sh record JAR OUTDIR    run the fixed commands below with JAR, into OUTDIR
-#   scripts/byte-identical.sh compare BASE NEW     compare two records byte for byte; exit 1 if any differ
+#   experiments/byte-identical.sh record JAR OUTDIR    run the fixed commands below with JAR, into OUTDIR
+#   experiments/byte-identical.sh compare BASE NEW     compare two records byte for byte; exit 1 if any differ
 #
 # Typical use: build the untouched branch (mvn -q -B package -DskipTests), copy target/sitcov-*.jar aside,
 # record it into /tmp/base; build the changed branch, record it into /tmp/new; compare /tmp/base /tmp/new.

@@ -53,12 +53,12 @@ public final class Comparison {
 
     private final AnalysisPlan plan;
     private final int replications;
-    private final List<MeasureTest> measures;
-    private final List<FaultTest> faults;
+    private final List<MeasureComparison> measures;
+    private final List<FaultComparison> faults;
     private final int[] family;
 
-    private Comparison(AnalysisPlan plan, int replications, List<MeasureTest> measures, List<FaultTest> faults,
-                       int[] family) {
+    private Comparison(AnalysisPlan plan, int replications, List<MeasureComparison> measures,
+                       List<FaultComparison> faults, int[] family) {
         this.plan = plan;
         this.replications = replications;
         this.measures = List.copyOf(measures);
@@ -69,8 +69,8 @@ public final class Comparison {
     /** Every pair of drivers of {@code summary}, with bootstrap resamples drawn from {@code random}. */
     public static Comparison of(ExperimentConfig config, Summary summary, RandomGenerator random) {
         AnalysisPlan plan = config.analysis();
-        List<MeasureTest> measures = new ArrayList<>();
-        List<FaultTest> faults = new ArrayList<>();
+        List<MeasureComparison> measures = new ArrayList<>();
+        List<FaultComparison> faults = new ArrayList<>();
         List<String> drivers = summary.drivers();
         for (int i = 0; i < drivers.size(); i++) {
             for (int j = i + 1; j < drivers.size(); j++) {
@@ -90,17 +90,17 @@ public final class Comparison {
         return replications;
     }
 
-    public List<MeasureTest> measures() {
+    public List<MeasureComparison> measures() {
         return measures;
     }
 
-    public List<FaultTest> faults() {
+    public List<FaultComparison> faults() {
         return faults;
     }
 
     /** The primary question's test, if the plan has one. */
-    public java.util.Optional<MeasureTest> primary() {
-        return measures.stream().filter(MeasureTest::primary).findFirst();
+    public java.util.Optional<MeasureComparison> primary() {
+        return measures.stream().filter(MeasureComparison::primary).findFirst();
     }
 
     /** Tests in the exploratory family: differences of measures, equivalences of measures, differences of faults. */
@@ -120,7 +120,8 @@ public final class Comparison {
         return family[2];
     }
 
-    private static void measures(PairedReplications pair, AnalysisPlan plan, RandomGenerator random, List<MeasureTest> out) {
+    private static void measures(PairedReplications pair, AnalysisPlan plan, RandomGenerator random,
+            List<MeasureComparison> out) {
         List<double[][]> earlier = new ArrayList<>();
         for (Measure m : Measure.values()) {
             double[] x = pair.measureA(m);
@@ -135,13 +136,15 @@ public final class Comparison {
             Tost.Result tost = note == null && x.length >= 2
                     ? Tost.paired(x, y, margin, AnalysisPlan.ALPHA) : null;
             double a12 = VarghaDelaney.a12(x, y);
-            out.add(new MeasureTest(m, pair.a(), pair.b(), primary, paired, margin, tost == null ? Double.NaN : tost.p(),
+            out.add(new MeasureComparison(m, pair.a(), pair.b(), primary, paired, margin,
+                    tost == null ? Double.NaN : tost.p(),
                     Double.NaN, tost == null ? Double.NaN : tost.low(), tost == null ? Double.NaN : tost.high(),
                     MannWhitney.test(x, y).p(), a12, VarghaDelaney.magnitude(a12), null, note));
         }
     }
 
-    private static void faults(PairedReplications pair, List<Fault> list, RandomGenerator random, List<FaultTest> out) {
+    private static void faults(PairedReplications pair, List<Fault> list, RandomGenerator random,
+            List<FaultComparison> out) {
         long mapsA = Arrays.stream(pair.mapsA()).sum();
         long mapsB = Arrays.stream(pair.mapsB()).sum();
         for (int f = 0; f < list.size(); f++) {
@@ -151,7 +154,8 @@ public final class Comparison {
                     : foundA == mapsA && foundB == mapsB ? "found on every map by both" : null;
             PairedDifference paired = paired(pair.shareA(f), pair.shareB(f), Alternative.TWO_SIDED, random);
             FisherExact.Result fisher = note == null ? FisherExact.test(foundA, mapsA - foundA, foundB, mapsB - foundB) : null;
-            out.add(new FaultTest(list.get(f), pair.a(), pair.b(), paired, Dispersion.pearson(pair.foundA(f), pair.mapsA()),
+            out.add(new FaultComparison(list.get(f), pair.a(), pair.b(), paired,
+                    Dispersion.pearson(pair.foundA(f), pair.mapsA()),
                     Dispersion.pearson(pair.foundB(f), pair.mapsB()), foundA, mapsA, foundB, mapsB,
                     fisher == null ? Double.NaN : fisher.p(), fisher == null ? Double.NaN : fisher.oddsRatio(),
                     fisher == null ? Double.NaN : fisher.low(), fisher == null ? Double.NaN : fisher.high(), null, note));
@@ -193,30 +197,31 @@ public final class Comparison {
     }
 
     /** Holm over the exploratory family, then each test's finding. */
-    private static Comparison adjust(AnalysisPlan plan, int n, List<MeasureTest> measures, List<FaultTest> faults) {
+    private static Comparison adjust(AnalysisPlan plan, int n, List<MeasureComparison> measures,
+            List<FaultComparison> faults) {
         List<Double> p = new ArrayList<>();
         int[] differenceAt = new int[measures.size()];
         int[] tostAt = new int[measures.size()];
         int[] faultAt = new int[faults.size()];
         int[] family = new int[3];
         for (int i = 0; i < measures.size(); i++) {
-            MeasureTest m = measures.get(i);
+            MeasureComparison m = measures.get(i);
             boolean exploratory = m.note() == null && !m.primary();
             differenceAt[i] = exploratory && reachable(m.paired()) ? add(p, m.paired().p(), family, 0) : -1;
             tostAt[i] = exploratory && !Double.isNaN(m.pTost()) ? add(p, m.pTost(), family, 1) : -1;
         }
         for (int i = 0; i < faults.size(); i++) {
-            FaultTest f = faults.get(i);
+            FaultComparison f = faults.get(i);
             faultAt[i] = f.note() == null && reachable(f.paired()) ? add(p, f.paired().p(), family, 2) : -1;
         }
         double[] holm = Holm.adjust(p.stream().mapToDouble(Double::doubleValue).toArray());
         double familyLevel = AnalysisPlan.ALPHA / Math.max(1, p.size());
-        List<MeasureTest> judgedMeasures = new ArrayList<>();
+        List<MeasureComparison> judgedMeasures = new ArrayList<>();
         for (int i = 0; i < measures.size(); i++) {
             judgedMeasures.add(judge(measures.get(i), differenceAt[i] < 0 ? Double.NaN : holm[differenceAt[i]],
                     tostAt[i] < 0 ? Double.NaN : holm[tostAt[i]], familyLevel, plan));
         }
-        List<FaultTest> judgedFaults = new ArrayList<>();
+        List<FaultComparison> judgedFaults = new ArrayList<>();
         for (int i = 0; i < faults.size(); i++) {
             judgedFaults.add(judge(faults.get(i), faultAt[i] < 0 ? Double.NaN : holm[faultAt[i]], familyLevel));
         }
@@ -234,8 +239,8 @@ public final class Comparison {
         return d.smallestP() < AnalysisPlan.ALPHA;
     }
 
-    private static MeasureTest judge(MeasureTest m, double pAdjusted, double pTostAdjusted, double familyLevel,
-                                     AnalysisPlan plan) {
+    private static MeasureComparison judge(MeasureComparison m, double pAdjusted, double pTostAdjusted,
+                                           double familyLevel, AnalysisPlan plan) {
         PairedDifference d = m.paired();
         boolean reachable = m.note() == null && reachable(d);
         double level = m.primary() ? AnalysisPlan.ALPHA : familyLevel;
@@ -258,12 +263,12 @@ public final class Comparison {
         } else {
             finding = Finding.INCONCLUSIVE;
         }
-        return new MeasureTest(m.measure(), m.driverA(), m.driverB(), m.primary(), judged, m.margin(), m.pTost(),
+        return new MeasureComparison(m.measure(), m.driverA(), m.driverB(), m.primary(), judged, m.margin(), m.pTost(),
                 m.primary() ? m.pTost() : pTostAdjusted, m.tostLow(), m.tostHigh(), m.pMannWhitney(), m.a12(), m.effect(),
                 finding, note);
     }
 
-    private static FaultTest judge(FaultTest f, double pAdjusted, double familyLevel) {
+    private static FaultComparison judge(FaultComparison f, double pAdjusted, double familyLevel) {
         PairedDifference d = f.paired();
         boolean tested = !Double.isNaN(pAdjusted);
         Finding finding;
@@ -279,8 +284,9 @@ public final class Comparison {
             finding = Finding.INCONCLUSIVE;
         }
         PairedDifference judged = d.adjusted(pAdjusted, tested ? detectable(d, familyLevel, true) : Double.NaN);
-        return new FaultTest(f.fault(), f.driverA(), f.driverB(), judged, f.dispersionA(), f.dispersionB(), f.foundA(),
-                f.mapsA(), f.foundB(), f.mapsB(), f.pFisher(), f.oddsRatio(), f.oddsLow(), f.oddsHigh(), finding, note);
+        return new FaultComparison(f.fault(), f.driverA(), f.driverB(), judged, f.dispersionA(), f.dispersionB(),
+                f.foundA(), f.mapsA(), f.foundB(), f.mapsB(), f.pFisher(), f.oddsRatio(), f.oddsLow(), f.oddsHigh(),
+                finding, note);
     }
 
     /**

@@ -4,7 +4,7 @@
  * found against ticks ({@link sitcov.analysis.Discovery}), the coverage curve
  * ({@link sitcov.analysis.CurvePoint}), the paired {@link sitcov.analysis.Comparison} of drivers that the
  * declared {@link sitcov.experiment.AnalysisPlan} judges (one primary question, an exploratory family,
- * equivalence margins: {@link sitcov.analysis.MeasureTest}, {@link sitcov.analysis.FaultTest},
+ * equivalence margins: {@link sitcov.analysis.MeasureComparison}, {@link sitcov.analysis.FaultComparison},
  * {@link sitcov.analysis.Finding}), situations against faults ({@link sitcov.analysis.SituationFaults})
  * and the effort sweep ({@link sitcov.analysis.Sweep}). Knows no driver by name and no file; the words of
  * the verdict are in {@code sitcov.verdict}.

@@ -19,7 +19,7 @@ import java.util.function.DoubleUnaryOperator;
 import java.util.stream.Stream;
 import sitcov.analysis.Comparison;
 import sitcov.analysis.Discovery;
-import sitcov.analysis.FaultTest;
+import sitcov.analysis.FaultComparison;
 import sitcov.analysis.Finding;
 import sitcov.analysis.Summary;
 import sitcov.experiment.Measure;
@@ -89,7 +89,7 @@ public final class StatsFigures {
     }
 
     static BufferedImage oddsRatios(Comparison comparison, Pair pair) {
-        List<FaultTest> tests = comparison.faults().stream()
+        List<FaultComparison> tests = comparison.faults().stream()
                 .filter(t -> t.driverA().equals(pair.a()) && t.driverB().equals(pair.b()))
                 .toList();
         int rowHeight = 22;
@@ -120,7 +120,7 @@ public final class StatsFigures {
         g.drawString("odds ratio (> 1: " + pair.a() + " finds it on more of its maps; ends beyond 0.05 or 20 are clipped)",
                 left, bottom + 32);
         for (int i = 0; i < tests.size(); i++) {
-            FaultTest t = tests.get(i);
+            FaultComparison t = tests.get(i);
             int y = top + i * rowHeight + rowHeight / 2;
             boolean differs = FaultFindings.differs(t.finding());
             g.setColor(Color.BLACK);
@@ -153,7 +153,7 @@ public final class StatsFigures {
      * What a fault's row says instead of an odds ratio, if it has none: found by neither driver, or on
      * every map by both (a ratio of nothing against nothing says nothing).
      */
-    static Optional<String> noRatio(FaultTest t) {
+    static Optional<String> noRatio(FaultComparison t) {
         return Double.isNaN(t.oddsRatio()) ? Optional.of(Objects.requireNonNullElse(t.note(), "no odds ratio"))
                 : Optional.empty();
     }

@@ -4,8 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import sitcov.analysis.Comparison;
-import sitcov.analysis.FaultTest;
-import sitcov.analysis.MeasureTest;
+import sitcov.analysis.FaultComparison;
+import sitcov.analysis.MeasureComparison;
 import sitcov.analysis.PairedDifference;
 
 /**
@@ -31,7 +31,7 @@ public final class StatsCsv {
     public static List<String> rows(Comparison comparison) {
         List<String> rows = new ArrayList<>();
         rows.add(HEADER);
-        for (MeasureTest m : comparison.measures()) {
+        for (MeasureComparison m : comparison.measures()) {
             String role = m.primary() ? "primary" : m.finding().tested() ? "exploratory" : "untested";
             Columns.Row row = COLUMNS.row().set("kind", "measure").set("name", m.measure().key())
                     .set("driver_a", m.driverA()).set("driver_b", m.driverB()).set("role", role)
@@ -43,7 +43,7 @@ public final class StatsCsv {
                     .set("effect_unpaired", m.effect().label());
             rows.add(row.blankRest().text());
         }
-        for (FaultTest f : comparison.faults()) {
+        for (FaultComparison f : comparison.faults()) {
             String role = f.finding().tested() ? "exploratory" : "untested";
             Columns.Row row = COLUMNS.row().set("kind", "fault").set("name", "fault_" + f.fault().id())
                     .set("driver_a", f.driverA()).set("driver_b", f.driverB()).set("role", role)

@@ -9,7 +9,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import sitcov.analysis.Comparison;
-import sitcov.analysis.FaultTest;
+import sitcov.analysis.FaultComparison;
 import sitcov.analysis.Finding;
 import sitcov.analysis.PairedDifference;
 
@@ -25,7 +25,7 @@ public final class FaultFindings {
         double lowest = Double.POSITIVE_INFINITY;
         double highest = 0;
         Map<String, List<Integer>> untested = new TreeMap<>();
-        for (FaultTest f : comparison.faults()) {
+        for (FaultComparison f : comparison.faults()) {
             if (!f.driverA().equals(a) || !f.driverB().equals(b)) {
                 continue;
             }
@@ -68,7 +68,7 @@ public final class FaultFindings {
     }
 
     /** "fault 16 (59.8 % of fault-search's maps against 38.7 % of random's, +21.3 points, CI …)": the higher first. */
-    private static String found(FaultTest f) {
+    private static String found(FaultComparison f) {
         PairedDifference d = f.paired();
         boolean a = f.finding() == Finding.HIGHER_A;
         double sign = a ? 1 : -1;

@@ -2,9 +2,9 @@ package sitcov.verdict;
 
 import java.util.ArrayList;
 import java.util.List;
-import sitcov.analysis.FaultTest;
+import sitcov.analysis.FaultComparison;
 import sitcov.analysis.Finding;
-import sitcov.analysis.MeasureTest;
+import sitcov.analysis.MeasureComparison;
 
 /**
  * The top of one pair's part of a verdict: a heading naming the pair, then its bottom line in one
@@ -25,14 +25,14 @@ public final class PairSummary {
     }
 
     /** "In short: A is ahead on …; B on …; equivalent in …; the other 2 measures show no difference." */
-    static String inShort(List<MeasureTest> pair, List<FaultTest> faults) {
+    static String inShort(List<MeasureComparison> pair, List<FaultComparison> faults) {
         String a = pair.get(0).driverA();
         String b = pair.get(0).driverB();
         List<String> aheadA = new ArrayList<>();
         List<String> aheadB = new ArrayList<>();
         List<String> equivalent = new ArrayList<>();
         int nothing = 0;
-        for (MeasureTest m : pair) {
+        for (MeasureComparison m : pair) {
             String name = name(m) + (m.primary() ? " (the primary question)" : "");
             switch (m.finding()) {
                 case HIGHER_A -> aheadA.add(name);
@@ -63,7 +63,7 @@ public final class PairSummary {
     }
 
     /** "3 faults (0, 7, 16)" found on a larger share of one driver's maps, if any. */
-    private static java.util.Optional<String> faults(List<FaultTest> faults, Finding finding) {
+    private static java.util.Optional<String> faults(List<FaultComparison> faults, Finding finding) {
         List<String> ids = faults.stream().filter(f -> f.finding() == finding).map(f -> String.valueOf(f.fault().id()))
                 .toList();
         if (ids.isEmpty()) {
@@ -81,7 +81,7 @@ public final class PairSummary {
     }
 
     /** The measure's words without the paper's name in brackets: a summary line is short. */
-    private static String name(MeasureTest m) {
+    private static String name(MeasureComparison m) {
         return m.measure().words().replaceFirst(" \\(.*\\)$", "");
     }
 }

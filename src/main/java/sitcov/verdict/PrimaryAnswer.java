@@ -5,7 +5,7 @@ import static sitcov.verdict.VerdictText.p;
 import static sitcov.verdict.VerdictText.signed;
 
 import sitcov.analysis.Finding;
-import sitcov.analysis.MeasureTest;
+import sitcov.analysis.MeasureComparison;
 import sitcov.analysis.PairedDifference;
 import sitcov.experiment.AnalysisPlan;
 
@@ -19,7 +19,7 @@ final class PrimaryAnswer {
     private PrimaryAnswer() {
     }
 
-    static String of(MeasureTest m, AnalysisPlan plan) {
+    static String of(MeasureComparison m, AnalysisPlan plan) {
         String first = plan.primaryDrivers().get(0);
         String second = plan.primaryDrivers().get(1);
         boolean asNamed = first.equals(m.driverA());
@@ -56,7 +56,7 @@ final class PrimaryAnswer {
     }
 
     /** "1 fault", "5 cells": the unit in the singular where the margin is one. */
-    private static String unit(MeasureTest m) {
+    private static String unit(MeasureComparison m) {
         String unit = m.measure().unit();
         if (unit.isEmpty()) {
             return "";

@@ -6,7 +6,7 @@ import java.util.Locale;
 import java.util.Optional;
 import sitcov.analysis.Comparison;
 import sitcov.analysis.Finding;
-import sitcov.analysis.MeasureTest;
+import sitcov.analysis.MeasureComparison;
 import sitcov.analysis.PairedDifference;
 import sitcov.analysis.SituationFaults;
 import sitcov.experiment.AnalysisPlan;
@@ -36,7 +36,7 @@ public final class VerdictText {
                     + " other shards (merge SHARD... --out DIR) for the verdict.");
             return out;
         }
-        Optional<MeasureTest> primary = comparison.primary();
+        Optional<MeasureComparison> primary = comparison.primary();
         if (primary.isPresent()) {
             out.add("Primary question (declared in the preset): " + question(comparison.plan(), budget));
             out.add("Answer: " + PrimaryAnswer.of(primary.get(), comparison.plan()));
@@ -44,16 +44,16 @@ public final class VerdictText {
         fewReplications(comparison.replications()).ifPresent(out::add);
         unreachable(comparison).ifPresent(out::add);
         out.add(howToRead(comparison, budget));
-        List<MeasureTest> all = comparison.measures();
+        List<MeasureComparison> all = comparison.measures();
         int perPair = sitcov.experiment.Measure.values().length;
         for (int i = 0; i < all.size(); i += perPair) {
-            List<MeasureTest> pair = all.subList(i, i + perPair);
+            List<MeasureComparison> pair = all.subList(i, i + perPair);
             String a = pair.get(0).driverA();
             String b = pair.get(0).driverB();
             out.add(PairSummary.heading(a, b, comparison.replications()));
             out.add(PairSummary.inShort(pair, comparison.faults().stream()
                     .filter(f -> f.driverA().equals(a) && f.driverB().equals(b)).toList()));
-            for (MeasureTest m : pair) {
+            for (MeasureComparison m : pair) {
                 out.add(measure(m));
             }
             out.add(FaultFindings.line(comparison, a, b));
@@ -135,7 +135,7 @@ public final class VerdictText {
         }
     }
 
-    static String measure(MeasureTest m) {
+    static String measure(MeasureComparison m) {
         String words = m.measure().words();
         if (m.primary()) {
             return "- " + words + ": the primary question, answered above.";

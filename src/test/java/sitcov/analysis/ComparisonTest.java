@@ -47,7 +47,7 @@ public class ComparisonTest {
         return new Summary(SIX, results);
     }
 
-    static MeasureTest measure(Comparison c, Measure m) {
+    static MeasureComparison measure(Comparison c, Measure m) {
         return c.measures().stream().filter(t -> t.measure() == m).findFirst().orElseThrow();
     }
 
@@ -56,7 +56,7 @@ public class ComparisonTest {
         Comparison c = Comparison.of(SIX, filterCoversAndFindsMore(), new SplittableRandom(3));
         // six tied differences of one sign: W+ = 21, variance 6*7*13/24 - (6^3 - 6)/48 = 18.375,
         // z = (21 - 10.5 - 0.5) / sqrt(18.375) = 2.333, two-sided p = 0.0196 (continuity-corrected)
-        MeasureTest faults = measure(c, Measure.FAULTS_FOUND);
+        MeasureComparison faults = measure(c, Measure.FAULTS_FOUND);
         assertTrue(faults.primary());
         assertEquals(0.0196, faults.paired().p(), 1e-4);
         assertEquals(faults.paired().p(), faults.paired().pAdjusted(), 0, "the primary test is reported as is");
@@ -64,7 +64,7 @@ public class ComparisonTest {
         // the family: cells covered, the area under the discovery curve and fault 14, each p = 0.0196;
         // their TOSTs have no spread (every difference alike) and stay out, as do the untestable rows
         assertEquals(3, c.familySize());
-        MeasureTest cells = measure(c, Measure.CELLS_COVERED);
+        MeasureComparison cells = measure(c, Measure.CELLS_COVERED);
         assertEquals(3, cells.paired().meanA(), 1e-12);
         assertEquals(1, cells.paired().meanB(), 1e-12);
         assertEquals(2, cells.paired().difference().low(), 1e-12, "every resample of +2s has mean 2");
@@ -76,13 +76,13 @@ public class ComparisonTest {
     @Test
     void constantAndDuplicatedMeasuresAndFaultsFoundByNeitherAreNotTestable() {
         Comparison c = Comparison.of(SIX, filterCoversAndFindsMore(), new SplittableRandom(3));
-        MeasureTest maps = measure(c, Measure.MAPS_RUN);
+        MeasureComparison maps = measure(c, Measure.MAPS_RUN);
         assertEquals(Finding.NOT_TESTABLE, maps.finding());
         assertEquals("it is 3 in every replication of both", maps.note());
-        MeasureTest perMap = measure(c, Measure.AVG_MAP_FAULT);
+        MeasureComparison perMap = measure(c, Measure.AVG_MAP_FAULT);
         assertEquals(Finding.NOT_TESTABLE, perMap.finding(), "one fault found on every map: 1 per map, as faults found");
         assertEquals("the same numbers as distinct faults found for this pair", perMap.note());
-        FaultTest f19 = c.faults().get(1);
+        FaultComparison f19 = c.faults().get(1);
         assertEquals(Finding.NOT_TESTABLE, f19.finding());
         assertTrue(Double.isNaN(f19.oddsRatio()), "no odds ratio of nothing against nothing");
         assertTrue(Double.isNaN(f19.paired().pAdjusted()));
@@ -104,7 +104,8 @@ public class ComparisonTest {
                     DiscoveryTest.run("random", random.toArray(MapRun[]::new)))));
         }
         ExperimentConfig config = config(10, List.of("coverage-search", "random"));
-        FaultTest f14 = Comparison.of(config, new Summary(config, results), new SplittableRandom(5)).faults().get(0);
+        FaultComparison f14 = Comparison.of(config, new Summary(config, results),
+                new SplittableRandom(5)).faults().get(0);
         // pooled over all maps, 40 of 200 against 10 of 200: Fisher's exact test calls that a difference
         assertEquals(List.of(40L, 200L, 10L, 200L), List.of(f14.foundA(), f14.mapsA(), f14.foundB(), f14.mapsB()));
         assertEquals(FisherExact.test(40, 160, 10, 190).p(), f14.pFisher(), 0);
@@ -149,7 +150,7 @@ public class ComparisonTest {
         }
         ExperimentConfig three = config(6, List.of("coverage-filter", "random", "every-other"));
         Comparison c = Comparison.of(three, new Summary(three, withThird), new SplittableRandom(3));
-        MeasureTest area = c.measures().stream().filter(m -> m.measure() == Measure.DISCOVERY_AREA
+        MeasureComparison area = c.measures().stream().filter(m -> m.measure() == Measure.DISCOVERY_AREA
                 && m.driverB().equals("random")).findFirst().orElseThrow();
         // the filter finds fault 14 with its first map (300 ticks) of 900: area (900 - 300) / (900 * 2) = 1/3,
         // over the ticks this pair spent — not the 300 the third driver stopped at
@@ -174,7 +175,7 @@ public class ComparisonTest {
         ExperimentConfig config = new ExperimentConfig("verdict", 1, 10, 30, FaultSet.parse("14,19"), BudgetKind.TICKS,
                 GridDefinition.paper(), List.of("coverage-filter", "random"), List.of(), 100, FaultyRuns.UNTIL_VERDICT,
                 new AnalysisPlan(Measure.FAULTS_FOUND, List.of("random", "coverage-filter"), Direction.TWO_SIDED, Map.of()));
-        MeasureTest faults = measure(Comparison.of(config, new Summary(config, results), new SplittableRandom(2)),
+        MeasureComparison faults = measure(Comparison.of(config, new Summary(config, results), new SplittableRandom(2)),
                 Measure.FAULTS_FOUND);
         // differences (filter - random) -1, +1, 0 ten times each: mean 0, sd sqrt(20/29) = 0.8305, se 0.1516;
         // t = (0 + 1) / 0.1516 = 6.60 on 29 df for each bound: p far below 0.05
@@ -198,14 +199,14 @@ public class ComparisonTest {
         Comparison c = Comparison.of(SIX, new Summary(SIX, List.of()), new SplittableRandom(3));
         assertEquals(0, c.replications());
         assertEquals(Measure.values().length, c.measures().size());
-        for (MeasureTest m : c.measures()) {
+        for (MeasureComparison m : c.measures()) {
             assertEquals(Finding.NOT_TESTABLE, m.finding(), m.measure().toString());
             assertEquals("there are no replications to compare", m.note());
             assertTrue(Double.isNaN(m.a12()) && Double.isNaN(m.paired().difference().estimate()));
             assertEquals(sitcov.stats.EffectSize.UNDEFINED, m.effect());
         }
         assertEquals(2, c.faults().size());
-        for (FaultTest f : c.faults()) {
+        for (FaultComparison f : c.faults()) {
             assertEquals(Finding.NOT_TESTABLE, f.finding());
             assertEquals("there are no replications to compare", f.note());
         }

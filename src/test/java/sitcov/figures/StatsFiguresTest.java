@@ -15,7 +15,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import sitcov.analysis.Comparison;
-import sitcov.analysis.FaultTest;
+import sitcov.analysis.FaultComparison;
 import sitcov.analysis.Summary;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.AnalysisPlan;
@@ -120,12 +120,12 @@ class StatsFiguresTest {
     @Test
     void aFaultFoundByNeitherOrOnEveryMapByBothSaysSoInsteadOfARatio() {
         Summary summary = summary();
-        List<FaultTest> faults = comparison(summary).faults();
-        FaultTest bothEverywhere = faults.stream().filter(t -> t.driverB().equals("random") && t.fault().id() == 14)
+        List<FaultComparison> faults = comparison(summary).faults();
+        FaultComparison bothEverywhere = faults.stream()
+                .filter(t -> t.driverB().equals("random") && t.fault().id() == 14).findFirst().orElseThrow();
+        FaultComparison neither = faults.stream().filter(t -> t.driverB().equals("random") && t.fault().id() == 19)
                 .findFirst().orElseThrow();
-        FaultTest neither = faults.stream().filter(t -> t.driverB().equals("random") && t.fault().id() == 19)
-                .findFirst().orElseThrow();
-        FaultTest differs = faults.stream().filter(t -> t.driverA().equals("coverage-filter")
+        FaultComparison differs = faults.stream().filter(t -> t.driverA().equals("coverage-filter")
                 && t.driverB().equals("every-other") && t.fault().id() == 14).findFirst().orElseThrow();
         assertEquals(Optional.of("found on every map by both"), StatsFigures.noRatio(bothEverywhere));
         assertEquals(Optional.of("found by neither driver"), StatsFigures.noRatio(neither));

@@ -9,7 +9,7 @@ import sitcov.faults.Fault;
  * pooled: finds and maps of each driver, Fisher's exact p and the odds ratio with its CI (NaN where
  * the fault was not testable, as an odds ratio of nothing against nothing says nothing).
  */
-public record FaultTest(Fault fault, String driverA, String driverB, PairedDifference paired, double dispersionA,
-                        double dispersionB, long foundA, long mapsA, long foundB, long mapsB, double pFisher,
-                        double oddsRatio, double oddsLow, double oddsHigh, Finding finding, String note) {
+public record FaultComparison(Fault fault, String driverA, String driverB, PairedDifference paired, double dispersionA,
+                              double dispersionB, long foundA, long mapsA, long foundB, long mapsB, double pFisher,
+                              double oddsRatio, double oddsLow, double oddsHigh, Finding finding, String note) {
 }

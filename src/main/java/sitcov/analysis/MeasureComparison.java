@@ -9,7 +9,8 @@ import sitcov.stats.EffectSize;
  * interval), the unpaired Mann-Whitney p and Vargha–Delaney Â12 as description, and the finding;
  * {@code note} says why a measure was not tested. NaN marks what was not computed.
  */
-public record MeasureTest(Measure measure, String driverA, String driverB, boolean primary, PairedDifference paired,
-                          double margin, double pTost, double pTostAdjusted, double tostLow, double tostHigh,
-                          double pMannWhitney, double a12, EffectSize effect, Finding finding, String note) {
+public record MeasureComparison(Measure measure, String driverA, String driverB, boolean primary,
+                                PairedDifference paired, double margin, double pTost, double pTostAdjusted,
+                                double tostLow, double tostHigh, double pMannWhitney, double a12, EffectSize effect,
+                                Finding finding, String note) {
 }

@@ -61,7 +61,7 @@ final class HtmlReport {
         verdict(h, lines(folder, ResultsFolder.VERDICT));
         h.append("</div>\n");
         ReportMeasures.append(h, CsvTable.read(folder.resolve(ResultsFolder.SUMMARY)));
-        ReportStats.append(h, CsvTable.read(folder.resolve(ResultsFolder.STATS)), config.faultList());
+        ReportStats.append(h, CsvTable.read(folder.resolve(ResultsFolder.STATS)));
         ReportFaultTables.table2(h, CsvTable.read(folder.resolve(ResultsFolder.TABLE2)), config.drivers());
         h.append("<h2>Figures</h2><p class=\"muted\">each opens at full size</p>\n");
         for (String fig : figures(folder)) {
@@ -70,7 +70,7 @@ final class HtmlReport {
         }
         ReportGrid.append(h, config.grid(), config.drivers(), inOrder);
         ReportFaultMaps.append(h, folder, config, inOrder, version(folder));
-        ReportFaultTables.uniformity(h, CsvTable.read(folder.resolve(ResultsFolder.UNIFORMITY)), config.faultList());
+        ReportFaultTables.uniformity(h, CsvTable.read(folder.resolve(ResultsFolder.UNIFORMITY)));
         h.append("<p class=\"muted\">Every table above is a CSV file in this folder; runs.csv has one row per"
                 + " simulated run.</p></body></html>\n");
         return h.toString();

@@ -54,7 +54,7 @@ final class ReportFaultTables {
         }
     }
 
-    static void uniformity(StringBuilder h, CsvTable u, List<sitcov.faults.Fault> faults) {
+    static void uniformity(StringBuilder h, CsvTable u) {
         h.append("<h2>Situations against faults: the uniformity test</h2><p class=\"muted\">from <a href=\"")
                 .append(ResultsFolder.UNIFORMITY).append("\">").append(ResultsFolder.UNIFORMITY).append("</a>: over"
                 + " distinct maps (a map run by several drivers counted once), the share of the variation in whether a"
@@ -71,7 +71,7 @@ final class ReportFaultTables {
             int id = Integer.parseInt(u.get(r, "fault"));
             int maps = Integer.parseInt(u.get(r, "maps"));
             int found = Integer.parseInt(u.get(r, "found"));
-            String label = faults.stream().filter(f -> f.id() == id).map(sitcov.faults.Fault::label).findFirst().orElse("");
+            String label = sitcov.faults.Fault.ofId(id).label();
             String counted = VerdictText.leftOut(found, maps).map(why -> "no: " + why).orElse("yes");
             table.row(List.of(id + " " + label, HtmlNumbers.number(u.get(r, "maps")), HtmlNumbers.number(u.get(r, "found")),
                     HtmlNumbers.percent(u.get(r, "explained_by_cell")), HtmlNumbers.percent(u.get(r, "explained_by_chance")),

@@ -33,7 +33,7 @@ final class ReportStats {
     private ReportStats() {
     }
 
-    static void append(StringBuilder h, CsvTable stats, List<Fault> faults) {
+    static void append(StringBuilder h, CsvTable stats) {
         h.append("<h2>Statistics of every pair of drivers</h2><p class=\"muted\">from <a href=\"").append(ResultsFolder.STATS)
                 .append("\">").append(ResultsFolder.STATS).append("</a> (all its columns there). The difference is the"
                 + " mean over paired replications of the first driver's value minus the second's; p is Holm-adjusted over the exploratory family (the primary"
@@ -57,7 +57,7 @@ final class ReportStats {
                 if (stats.get(r, "kind").equals("measure")) {
                     measures.row(measureRow(stats, r, a, b));
                 } else {
-                    found.row(faultRow(stats, r, a, b, faults));
+                    found.row(faultRow(stats, r, a, b));
                 }
             }
             measures.appendTo(h);
@@ -80,9 +80,9 @@ final class ReportStats {
                         s.get(r, "effect_unpaired")));
     }
 
-    private static List<String> faultRow(CsvTable s, List<String> r, String a, String b, List<Fault> faults) {
+    private static List<String> faultRow(CsvTable s, List<String> r, String a, String b) {
         int id = Integer.parseInt(s.get(r, "name").replace("fault_", ""));
-        String label = faults.stream().filter(f -> f.id() == id).map(Fault::label).findFirst().orElse("");
+        String label = Fault.ofId(id).label();
         String ratio = s.get(r, "odds_ratio_pooled");
         return List.of(id + " " + label, finding(s, r, a, b), HtmlNumbers.percent(s.get(r, "mean_a")),
                 HtmlNumbers.percent(s.get(r, "mean_b")), difference(s, r, true), HtmlNumbers.p(s.get(r, "p_adjusted")),

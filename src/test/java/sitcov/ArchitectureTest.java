@@ -23,7 +23,7 @@ class ArchitectureTest {
     private static final Path MAIN = Path.of("src", "main", "java", "sitcov");
     /** The simulated world and what it is made of: below every job that runs or reports an experiment. */
     private static final Set<String> SIMULATION = Set.of(
-            "engine", "geom", "stats", "world", "faults", "vehicles", "oracle", "coverage");
+            "engine", "geom", "stats", "world", "faults", "control", "vehicles", "oracle", "coverage");
 
     /** Packages that compute and write text only: no drawing, no window. */
     private static final Set<String> HEADLESS = union(SIMULATION,
@@ -39,11 +39,12 @@ class ArchitectureTest {
             Map.entry("stats", Set.of()),
             Map.entry("world", Set.of("engine", "geom")),
             Map.entry("faults", Set.of("engine")),
-            Map.entry("vehicles", Set.of("world", "faults", "engine", "geom")),
-            Map.entry("oracle", Set.of("vehicles", "world", "engine", "geom")),
+            Map.entry("control", Set.of("world", "engine", "geom")),
+            Map.entry("vehicles", Set.of("control", "world", "faults", "engine", "geom")),
+            Map.entry("oracle", Set.of("control", "vehicles", "world", "engine", "geom")),
             Map.entry("coverage", Set.of("world", "geom")),
             // judging one map: a run, its twin with a fault, the verdict
-            Map.entry("judge", Set.of("engine", "geom", "stats", "world", "faults", "vehicles", "oracle")),
+            Map.entry("judge", Set.of("engine", "geom", "stats", "world", "faults", "control", "vehicles", "oracle")),
             // the experiment engine: it knows drivers only through the Driver interface
             Map.entry("experiment", union(SIMULATION, "judge")),
             Map.entry("drivers", union(SIMULATION, "judge", "experiment")),

@@ -21,6 +21,7 @@ public final class LiveRun {
     private final FaultSwitchboard switchboard;
     private final Scene scene;
     private final AccidentDetector detector;
+    private boolean ended;
 
     public LiveRun(WorldMap map, long internalSeed, Set<Fault> faults) {
         this.map = map;
@@ -35,7 +36,12 @@ public final class LiveRun {
 
     /** Runs one tick; false once the run has ended (Target reached, timeout, or stopped). */
     public boolean step() {
-        return state.step();
+        boolean goesOn = state.step();
+        if (!goesOn && !ended) {
+            ended = true;
+            scene.autonomousCar().end(detector.outcome() == null ? "STOPPED" : detector.outcome().name(), detector.ticks());
+        }
+        return goesOn;
     }
 
     public long tick() {

@@ -5,6 +5,7 @@ import java.util.Collections;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
+import sitcov.control.ControllerFailure;
 import sitcov.engine.SimState;
 import sitcov.engine.Steppable;
 import sitcov.geom.Box;
@@ -59,7 +60,7 @@ public final class AccidentDetector implements Steppable {
             record(tick, AccidentType.LEAVEROAD, car, -1);
         }
         offRoad = off;
-        boolean over = centreLine.isOver(car, body) && !car.overtakingStage().isPassing() && !car.isCrossingJunction();
+        boolean over = centreLine.isOver(car, body) && !car.selfReport().overtaking() && !car.selfReport().crossingJunction();
         if (over && !overCentreLine) {
             record(tick, AccidentType.CROSSCENTRELINE, car, -1);
         }
@@ -78,7 +79,10 @@ public final class AccidentDetector implements Steppable {
             }
             touchingMoving[i] = touching;
         }
-        if (car.hasReachedTarget()) {
+        if (car.failure() != null) {
+            finish(state, car.failure().kind() == ControllerFailure.Kind.TIMEOUT
+                    ? Outcome.CONTROLLER_TIMEOUT : Outcome.CONTROLLER_ERROR, tick);
+        } else if (car.hasReachedTarget()) {
             finish(state, Outcome.TARGET_REACHED, tick);
         } else if (tick + 1 >= Dynamics.TIMEOUT_TICKS) {
             record(tick, AccidentType.TIMEOUT, car, -1);

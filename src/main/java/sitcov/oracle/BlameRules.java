@@ -2,7 +2,7 @@ package sitcov.oracle;
 
 import sitcov.geom.Bearing;
 import sitcov.vehicles.AutonomousCar;
-import sitcov.vehicles.Vehicle;
+import sitcov.control.Vehicle;
 
 /** Decides, by the named {@link Blame} rules, whether a contact with a moving car is the car's fault. */
 final class BlameRules {
@@ -21,7 +21,7 @@ final class BlameRules {
         if (centreLine.touches(other.footprint())) {
             return Blame.EXCUSED_OTHER_ON_CENTRE_LINE;
         }
-        if (headingDifference > 135 && !carOverCentreLine && !car.overtakingStage().isPassing()) {
+        if (headingDifference > 135 && !carOverCentreLine && !car.selfReport().overtaking()) {
             return Blame.EXCUSED_OTHER_IN_WRONG_LANE;
         }
         return Blame.AT_FAULT;

@@ -22,7 +22,7 @@ final class CentreLine {
 
     /** Whether any corner of the car's footprint lies in the other lane of the road it drives along. */
     boolean isOver(AutonomousCar car, Box body) {
-        Compass lane = car.lane();
+        Compass lane = car.selfReport().lane() == null ? Compass.nearest(car.heading()) : car.selfReport().lane();
         double[] corners = body.corners();
         for (int i = 0; i < 4; i++) {
             double x = corners[2 * i];

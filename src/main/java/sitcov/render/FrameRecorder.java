@@ -7,7 +7,7 @@ import sitcov.judge.RunObserver;
 import sitcov.oracle.AccidentDetector;
 import sitcov.vehicles.AutonomousCar;
 import sitcov.vehicles.Scene;
-import sitcov.vehicles.Vehicle;
+import sitcov.control.Vehicle;
 
 /** Every vehicle's footprint every {@code every} ticks (and at the last tick), for an animation. */
 public final class FrameRecorder implements RunObserver {

@@ -24,6 +24,8 @@ public final class OutcomeText {
             case TARGET_REACHED -> "Reached the Target at t=" + last;
             case TIMEOUT -> "TIMEOUT at t=" + last + ", the Target not reached";
             case STOPPED_AT_VERDICT -> "Stopped at t=" + last + ", its verdict settled";
+            case CONTROLLER_TIMEOUT -> "CONTROLLER_TIMEOUT at t=" + last + ": the controller gave no command in time";
+            case CONTROLLER_ERROR -> "CONTROLLER_ERROR at t=" + last + ": the controller failed (see its log)";
         };
         List<Accident> real = accidents.stream().filter(a -> a.type() != AccidentType.TIMEOUT).toList();
         if (real.isEmpty()) {

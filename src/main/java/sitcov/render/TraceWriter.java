@@ -57,11 +57,11 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
                 .append(number(car.y())).append(',')
                 .append(number(car.heading())).append(',')
                 .append(number(car.speed())).append(',')
-                .append(car.lane()).append(',')
-                .append(car.overtakingStage()).append(',')
-                .append(car.isCrossingJunction()).append(',')
-                .append(car.isWaitingAtJunction()).append(',')
-                .append(text(car.steeredBy())).append(',')
+                .append(car.selfReport().lane()).append(',')
+                .append(car.selfReport().stage()).append(',')
+                .append(car.selfReport().crossingJunction()).append(',')
+                .append(car.selfReport().waitingAtJunction()).append(',')
+                .append(text(car.selfReport().steeredBy())).append(',')
                 .append(detector.accidents().size()).append('\n');
         try {
             out.append(row);

@@ -41,10 +41,19 @@ public final class TrajectoryRecorder implements RunObserver {
         ys[ticks] = car.y();
         headings[ticks] = car.heading();
         speeds[ticks] = car.speed();
-        stages[ticks] = (byte) car.overtakingStage().ordinal();
-        crossings[ticks] = car.isCrossingJunction();
+        stages[ticks] = (byte) stageOf(car.selfReport().stage()).ordinal();
+        crossings[ticks] = car.selfReport().crossingJunction();
         ticks++;
         accidents = detector.accidents(); // a read-only view of the detector's list
+    }
+
+    private static OvertakingStage stageOf(String reported) {
+        for (OvertakingStage s : STAGES) {
+            if (s.name().equals(reported)) {
+                return s;
+            }
+        }
+        return OvertakingStage.NOT_OVERTAKING;
     }
 
     private void grow() {

@@ -1,259 +1,161 @@
 package sitcov.vehicles;
 
-import java.util.random.RandomGenerator;
+import sitcov.control.Command;
+import sitcov.control.Controller;
+import sitcov.control.ControllerFailure;
+import sitcov.control.SelfReport;
+import sitcov.control.Vehicle;
 import sitcov.engine.SimState;
 import sitcov.engine.Steppable;
-import sitcov.faults.Fault;
-import sitcov.faults.FaultSwitchboard;
 import sitcov.geom.Bearing;
 import sitcov.geom.Box;
-import sitcov.geom.Compass;
 import sitcov.world.Dimensions;
-import sitcov.world.Road;
 import sitcov.world.StartPose;
 
 /**
- * The autonomous car, the system under test. Each tick it looks (road-marking camera, LIDAR,
- * traffic radar), then lets its behaviours state what they want — junctions, overtaking, keeping
- * its distance, reaching the Target, keeping its lane — and drives: one speed change, one turn of
- * at most 15°, one move. Seeded faults act at the seams each behaviour names.
+ * The car under test as the world has it: a body that only the world moves. Each tick, before any
+ * other vehicle, it hands its controller an observation, takes back a command, carries out the
+ * command's right-of-way requests, clamps its speed change and steering to the car's limits
+ * (recording that it had to), turns, moves, and judges from the geometry whether the car now
+ * stands on the Target. The controller's self-report is kept for people, never judged by.
  */
 public final class AutonomousCar implements Vehicle, Steppable {
     public static final int ID = 0;
-    /** The stream its own random decisions (the choice among exits already taken) come from. */
-    public static final String DECISIONS_STREAM = "autonomous-car.decisions";
-    static final double LOOKAHEAD = 6;
     /** Its rear axle, which it turns about, is this far behind its front. */
-    static final double REAR_AXLE = 1.5;
-    /** A lane centre seen further than this to the side, outside an overtake, is not believed. */
-    static final double IMPLAUSIBLE_OFFSET = 1.3;
+    public static final double REAR_AXLE = 1.5;
+    /** Ticks after which another vehicle's hold on a junction is stale, and the car under test is given it. */
+    static final long PATIENCE = 30;
 
     private final Scene scene;
-    private final FaultSwitchboard faults;
     private final Body body;
+    private final Controller controller;
+    private final SceneObservation observation;
+    private final Command command = new Command();
+    private final SelfReport report = new SelfReport();
+    private final TargetArrival arrival;
+    private double speedChange;
+    private double steering;
+    private boolean clamped;
+    private long clampedTicks;
+    private boolean reachedTarget;
+    private ControllerFailure failure;
     private Box keptClear;
     private Box keptClearOf;
-    private final CameraSettings cameraSettings;
-    private final MarkingCamera camera;
-    private final Lidar lidar;
-    private final TrafficSensor traffic = new TrafficSensor();
-    private final Waypoints waypoints;
-    private final JunctionDriver junctions;
-    private final Overtaker overtaker;
-    private final TargetSeeker targetSeeker;
-    private final Intent intent = new Intent();
-    private Compass lane;
-    private LaneEstimate estimate = LaneEstimate.NOTHING_SEEN;
-    private final LaneMemory laneMemory = new LaneMemory();
-    private double laneCentre;
-    private boolean reachedTarget;
 
-    AutonomousCar(Scene scene, StartPose start, FaultSwitchboard faults, RandomGenerator decisions) {
+    AutonomousCar(Scene scene, StartPose start, Controller controller) {
         this.scene = scene;
-        this.faults = faults;
         this.body = new Body(start.position().x(), start.position().y(), start.heading().bearing(), REAR_AXLE);
-        this.lane = start.heading();
-        this.cameraSettings = CameraFaults.settings(faults);
-        this.camera = new MarkingCamera(scene.network());
-        this.lidar = new Lidar(scene.network());
-        this.waypoints = new Waypoints(faults);
-        this.junctions = new JunctionDriver(this, faults, decisions,
-                Route.plan(scene.network(), scene.target()), scene.network().junctions().size());
-        this.overtaker = new Overtaker(this, faults);
-        this.targetSeeker = new TargetSeeker(this, faults);
+        this.controller = controller;
+        this.observation = new SceneObservation(scene, this);
+        this.arrival = new TargetArrival(scene.target());
     }
 
     @Override
     public void step(SimState state) {
-        if (reachedTarget) {
+        if (reachedTarget || failure != null) {
             return;
         }
-        intent.reset();
-        followHeadingIntoLane();
-        estimate = lookForMarkings();
-        laneCentre = laneMemory.laneCentre(lane, body.x(), body.y(), estimate);
-        traffic.scan(scene, this, lane, laneCentre, -5, 40);
-        junctions.releaseIfLeft();
-        junctions.plan(intent, lane);
-        if (!junctions.isCrossing()) {
-            overtaker.plan(intent, lane, laneCentre);
+        observation.refresh(state.tick());
+        command.clear();
+        try {
+            controller.step(observation, command);
+        } catch (ControllerFailure failed) {
+            failure = failed;
+            return;
         }
-        keepDistance();
-        targetSeeker.plan(intent, lane, estimate);
-        keepLane();
+        report.copyOf(command.report());
+        grantRightOfWay(state.tick());
         drive();
-        reachedTarget = targetSeeker.isReached(lane, estimate);
+        reachedTarget = arrival.isReached(body.x(), body.y());
     }
 
-    /** Outside junctions and manoeuvres the lane direction follows the car's heading. */
-    private void followHeadingIntoLane() {
-        if (junctions.isCrossing() || overtaker.stage().isPassing()) {
-            return;
+    /** Lets go first, then asks: a junction asked for is given when the signal showed it would be. */
+    private void grantRightOfWay(long tick) {
+        JunctionOccupancy occupancy = scene.occupancy();
+        for (int i = 0; i < command.releaseCount(); i++) {
+            int j = command.releaseAt(i);
+            if (j >= 0 && j < scene.network().junctions().size()) {
+                occupancy.release(j, ID);
+            }
         }
-        Compass nearest = Compass.nearest(body.heading());
-        if (Math.abs(Bearing.turn(body.heading(), nearest.bearing())) < 30) {
-            lane = nearest;
+        for (int i = 0; i < command.claimCount(); i++) {
+            int j = command.claimAt(i);
+            if (j >= 0 && j < scene.network().junctions().size()
+                    && !scene.isOccupiedByOther(scene.network().junctions().get(j), this)) {
+                occupancy.request(j, ID, tick, PATIENCE);
+            }
         }
-    }
-
-    private LaneEstimate lookForMarkings() {
-        LaneEstimate seen = camera.look(body.x(), body.y(), lane, cameraSettings);
-        camera.keepHits();
-        if (cameraSettings != CameraSettings.STANDARD) {
-            LaneEstimate correct = camera.look(body.x(), body.y(), lane, CameraSettings.STANDARD);
-            CameraFaults.record(faults, !seen.equals(correct));
-        }
-        // Driving its lane, the car is never far off its lane centre: a sighting that says so is
-        // another road's lines, seen across a junction, and is not believed.
-        if (!overtaker.stage().isPassing() && Math.abs(seen.laneCentre()) > IMPLAUSIBLE_OFFSET) {
-            return LaneEstimate.NOTHING_SEEN;
-        }
-        return seen;
-    }
-
-    /** Keeps a stopping distance to whatever moves in its path. */
-    private void keepDistance() {
-        double gap = traffic.pathGap();
-        if (Double.isInfinite(gap)) {
-            return;
-        }
-        double lead = traffic.pathSpeed();
-        double room = lead >= 0
-                ? gap + Dynamics.stoppingDistance(lead) - lead - 2
-                : gap - 2 + 4 * lead;
-        intent.stopWithin(room, "traffic");
-    }
-
-    /** Steers to the lane centre the camera sees, a lookahead ahead; straight on when it sees none. */
-    private void keepLane() {
-        double offset = estimate.anySeen() ? estimate.laneCentre() : 0;
-        intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(offset, LOOKAHEAD)), "lane");
     }
 
     private void drive() {
-        double limit = intent.speedLimit();
-        if (intent.isCrawl() && limit >= Dynamics.CRAWL_CEILING) {
-            crawl();
-        } else {
-            body.approachSpeed(limit);
+        double wanted = body.speed() + command.speedChange();
+        double speed = Math.max(0, Math.min(Dynamics.MAX_SPEED, Double.isNaN(wanted) ? body.speed() : wanted));
+        double turn = command.steering();
+        double allowed = Double.isNaN(turn) ? 0 : Math.max(-Dynamics.MAX_TURN, Math.min(Dynamics.MAX_TURN, turn));
+        clamped = speed != wanted || allowed != turn;
+        if (clamped) {
+            clampedTicks++;
         }
-        body.turnTowards(intent.bearing(), Dynamics.MAX_TURN);
+        speedChange = speed - body.speed();
+        steering = allowed;
+        body.setSpeed(speed);
+        body.turnBy(allowed);
         body.move();
     }
 
-    /** Holds speed in the crawl band (faults 5 and 6 act here). */
-    private void crawl() {
-        if (body.speed() < Dynamics.CRAWL_FLOOR) {
-            body.accelerate();
-            if (faults.isActive(Fault.CRAWL_DOUBLE_ACCELERATION)) {
-                body.accelerate();
-                faults.effective(Fault.CRAWL_DOUBLE_ACCELERATION);
-            }
-        } else if (body.speed() >= Dynamics.CRAWL_CEILING) {
-            body.brake();
-            if (faults.isActive(Fault.CRAWL_DOUBLE_BRAKING)) {
-                body.brake();
-                faults.effective(Fault.CRAWL_DOUBLE_BRAKING);
-            }
-        }
+    /** The run is over: the controller is told how it ended. */
+    public void end(String outcome, long ticks) {
+        controller.end(new sitcov.control.RunEnd(outcome, ticks));
     }
 
-    Road road(Compass direction) {
-        return Lanes.roadAlong(scene.network(), body.x(), body.y(), direction);
+    /** Why the controller gave no command, once it failed (the run then ends); null while it works. */
+    public ControllerFailure failure() {
+        return failure;
     }
 
-    void setLane(Compass direction) {
-        lane = direction;
+    public Controller controller() {
+        return controller;
     }
 
-    Scene scene() {
-        return scene;
-    }
-
-    Waypoints waypoints() {
-        return waypoints;
-    }
-
-    Lidar lidar() {
-        return lidar;
-    }
-
-    TrafficSensor traffic() {
-        return traffic;
-    }
-
-    /** Whether it stands on the Target (the run is then over). */
+    /** Whether its front stands on the Target, in the Target's lane (the run is then over). */
     public boolean hasReachedTarget() {
         return reachedTarget;
     }
 
-    public OvertakingStage overtakingStage() {
-        return overtaker.stage();
+    /** What the controller said of itself in the last tick: information only. */
+    public SelfReport selfReport() {
+        return report;
     }
 
-    /** Whether it is turning through a junction square (being over the centre line is then justified). */
-    public boolean isCrossingJunction() {
-        return junctions.isCrossing();
+    /** The speed change and steering the world carried out in the last tick, after clamping. */
+    public double appliedSpeedChange() {
+        return speedChange;
     }
 
-    /** How many of the camera's rays met a marking in this tick's look (a viewer draws them). */
-    public int cameraHits() {
-        return camera.keptHits();
+    public double appliedSteering() {
+        return steering;
     }
 
-    public double cameraHitX(int hit) {
-        return camera.keptX(hit);
+    /** Whether the last command asked for more than the car's limits; how many ticks did so far. */
+    public boolean wasClamped() {
+        return clamped;
     }
 
-    public double cameraHitY(int hit) {
-        return camera.keptY(hit);
+    public long clampedTicks() {
+        return clampedTicks;
     }
 
-    /** How many rays of the LIDAR's last sweep hit something; where it stood and where they hit. */
-    public int lidarHits() {
-        return lidar.hits();
-    }
-
-    public double lidarOriginX() {
-        return lidar.originX();
-    }
-
-    public double lidarOriginY() {
-        return lidar.originY();
-    }
-
-    public double lidarHitX(int hit) {
-        return lidar.worldX(hit);
-    }
-
-    public double lidarHitY(int hit) {
-        return lidar.worldY(hit);
-    }
-
-    public boolean isWaitingAtJunction() {
-        return junctions.isWaiting();
-    }
-
-    /** The lane direction it is driving. */
-    public Compass lane() {
-        return lane;
-    }
-
-    /** Where it believes its lane centre is, metres to its right. */
-    public double believedLaneCentre() {
-        return laneCentre;
-    }
-
-    /** Which behaviour set the speed limit in the last tick (null when none did). */
-    public String limitedBy() {
-        return intent.limitedBy();
-    }
-
-
-
-    /** Which behaviour steered in the last tick. */
-    public String steeredBy() {
-        return intent.steeredBy();
+    /** Its footprint grown by {@link Clearance#AROUND_THE_CAR} all round: where traffic keeps out. */
+    Box keptClear() {
+        Box now = footprint();
+        if (keptClearOf != now) {
+            double h = body.heading();
+            keptClear = Box.behind(body.x() + Clearance.AROUND_THE_CAR * Bearing.dx(h),
+                    body.y() + Clearance.AROUND_THE_CAR * Bearing.dy(h), h,
+                    length() + 2 * Clearance.AROUND_THE_CAR, width() + 2 * Clearance.AROUND_THE_CAR);
+            keptClearOf = now;
+        }
+        return keptClear;
     }
 
     @Override
@@ -296,27 +198,14 @@ public final class AutonomousCar implements Vehicle, Steppable {
         return Dimensions.AUTONOMOUS_CAR_LENGTH;
     }
 
-    /** Its footprint grown by {@link Clearance#AROUND_THE_CAR} all round: where traffic keeps out. */
-    Box keptClear() {
-        Box now = footprint();
-        if (keptClearOf != now) {
-            double h = body.heading();
-            keptClear = Box.behind(body.x() + Clearance.AROUND_THE_CAR * Bearing.dx(h),
-                    body.y() + Clearance.AROUND_THE_CAR * Bearing.dy(h), h,
-                    length() + 2 * Clearance.AROUND_THE_CAR, width() + 2 * Clearance.AROUND_THE_CAR);
-            keptClearOf = now;
-        }
-        return keptClear;
+    @Override
+    public double width() {
+        return Dimensions.AUTONOMOUS_CAR_WIDTH;
     }
 
     @Override
     public Box footprint() {
         return body.footprint(length(), width());
-    }
-
-    @Override
-    public double width() {
-        return Dimensions.AUTONOMOUS_CAR_WIDTH;
     }
 
     @Override

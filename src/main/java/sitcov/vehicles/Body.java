@@ -74,6 +74,27 @@ final class Body {
         speed = 0;
     }
 
+    /**
+     * Takes on the pose and speed the world reports (a controller's model of its own car): the
+     * heading is taken as it comes, already normalised, so its unit vector is the world's to the bit.
+     */
+    void sync(double nx, double ny, double nheading, double nspeed) {
+        if (nx != x || ny != y || nheading != heading) {
+            footprint = null;
+            x = nx;
+            y = ny;
+            heading = nheading;
+            headingDx = Bearing.dx(heading);
+            headingDy = Bearing.dy(heading);
+        }
+        speed = nspeed;
+    }
+
+    /** Sets the speed (already within the car's limits). */
+    void setSpeed(double v) {
+        speed = v;
+    }
+
     void accelerate() {
         speed = Math.min(Dynamics.MAX_SPEED, speed + Dynamics.ACCELERATION);
     }
@@ -120,8 +141,17 @@ final class Body {
 
     /** Turns towards {@code bearing} by at most {@code maxTurn} degrees. */
     void turnTowards(double bearing, double maxTurn) {
+        turnBy(turnTowards(heading, bearing, maxTurn));
+    }
+
+    /** The turn from {@code heading} towards {@code bearing}, at most {@code maxTurn} degrees either way. */
+    static double turnTowards(double heading, double bearing, double maxTurn) {
         double turn = Bearing.turn(heading, bearing);
-        turn = Math.max(-maxTurn, Math.min(maxTurn, turn));
+        return Math.max(-maxTurn, Math.min(maxTurn, turn));
+    }
+
+    /** Turns by {@code turn} degrees (already within the car's limit) about the pivot. */
+    void turnBy(double turn) {
         if (turn == 0) {
             return;
         }

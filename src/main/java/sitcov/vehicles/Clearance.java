@@ -1,5 +1,6 @@
 package sitcov.vehicles;
 
+import sitcov.control.Vehicle;
 import sitcov.geom.Box;
 
 /**

@@ -1,5 +1,6 @@
 package sitcov.vehicles;
 
+import sitcov.control.Vehicle;
 import java.util.Arrays;
 import sitcov.geom.Bearing;
 import sitcov.geom.Compass;

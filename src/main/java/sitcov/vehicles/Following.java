@@ -1,5 +1,6 @@
 package sitcov.vehicles;
 
+import sitcov.control.Vehicle;
 import sitcov.geom.Bearing;
 
 /** How a moving car follows: the speed that keeps its stopping distance to whatever is in its path. */

@@ -1,5 +1,6 @@
 package sitcov.vehicles;
 
+import sitcov.control.Vehicle;
 import java.util.List;
 import java.util.random.RandomGenerator;
 import sitcov.faults.Fault;
@@ -27,8 +28,6 @@ final class JunctionDriver {
     /** The straight legs of a U-turn, either side of turning on the spot. */
     static final double U_TURN_SPEED = 0.5;
     static final double CRAWL_BEFORE_TURNING = 1.0;
-    /** Ticks after which another vehicle's hold on a junction is taken to be stale. */
-    static final long PATIENCE = 30;
     static final double EXIT_BEYOND_SQUARE = 1.5;
     /** Room the car wants in its exit lane beyond the square before it enters, and what counts as blocking it. */
     static final double EXIT_ROOM = 6;
@@ -43,7 +42,7 @@ final class JunctionDriver {
      */
     static final double WAIT_SHORT_OF_SQUARE = 2.5;
 
-    private final AutonomousCar car;
+    private final BuiltinCar car;
     private final FaultSwitchboard faults;
     private final RandomGenerator decisions;
     private final Route route;
@@ -62,7 +61,7 @@ final class JunctionDriver {
     /** The junction the car last waited short of: it creeps up to that square's edge (faults 5 and 6 act there). */
     private int waitedFor = -1;
 
-    JunctionDriver(AutonomousCar car, FaultSwitchboard faults, RandomGenerator decisions, Route route, int junctions) {
+    JunctionDriver(BuiltinCar car, FaultSwitchboard faults, RandomGenerator decisions, Route route, int junctions) {
         this.car = car;
         this.faults = faults;
         this.decisions = decisions;
@@ -82,9 +81,9 @@ final class JunctionDriver {
     /** Lets go of the junction once the car's whole footprint has left its square. */
     void releaseIfLeft() {
         if (held >= 0 && !crossing) {
-            Junction j = car.scene().network().junctions().get(held);
+            Junction j = car.roads().junctions().get(held);
             if (!car.footprint().overlaps(j.square())) {
-                car.scene().occupancy().release(held, car.id());
+                car.rightOfWay().release(held);
                 held = -1;
             }
         }
@@ -101,7 +100,7 @@ final class JunctionDriver {
         if (road == null) {
             return;
         }
-        Junction next = Lanes.nextJunction(car.scene().network(), road, lane, car.x(), car.y(), -1);
+        Junction next = Lanes.nextJunction(car.roads(), road, lane, car.x(), car.y(), -1);
         if (next != null && recognises(next)) {
             approach(intent, lane, next, Lanes.distanceToSquare(next, lane, car.x(), car.y()));
         }
@@ -112,9 +111,9 @@ final class JunctionDriver {
         if (!crossing) {
             return;
         }
-        Road road = Lanes.roadAlong(car.scene().network(), car.x(), car.y(), exit);
+        Road road = Lanes.roadAlong(car.roads(), car.x(), car.y(), exit);
         Junction next = road == null ? null
-                : Lanes.nextJunction(car.scene().network(), road, exit, car.x(), car.y(), held);
+                : Lanes.nextJunction(car.roads(), road, exit, car.x(), car.y(), held);
         if (next != null && recognises(next)) {
             double d = Lanes.distanceToSquare(next, exit, car.x(), car.y());
             if (d < LOOK_BEYOND) {
@@ -131,14 +130,14 @@ final class JunctionDriver {
         if (next.id() == reserved && !crossing) {
             // the junction asked for while crossing the one before becomes the one held
             if (held >= 0) {
-                car.scene().occupancy().release(held, car.id());
+                car.rightOfWay().release(held);
             }
             held = reserved;
             exit = reservedExit;
             reserved = -1;
         }
         if ((next.id() == held || next.id() == reserved) && !crossing
-                && !car.scene().occupancy().isHeldBy(next.id(), car.id())) {
+                && !car.rightOfWay().isHeld(next.id())) {
             // its hold went stale and another vehicle took the junction over: ask again
             if (next.id() == held) {
                 held = -1;
@@ -165,15 +164,14 @@ final class JunctionDriver {
             return;
         }
         // a stale hold is only taken over once the square is seen to be empty
-        if (!car.scene().isOccupiedByOther(next, car)
-                && car.scene().occupancy().request(next.id(), car.id(), car.scene().tick(), PATIENCE)) {
+        if (car.rightOfWay().request(next.id())) {
             Compass chosen = chooseExit(next, lane);
             if (crossing) {
                 reserved = next.id();
                 reservedExit = chosen;
             } else {
                 if (held >= 0 && held != next.id()) {
-                    car.scene().occupancy().release(held, car.id());
+                    car.rightOfWay().release(held);
                 }
                 held = next.id();
                 exit = chosen;
@@ -228,8 +226,8 @@ final class JunctionDriver {
         double w = sitcov.world.Dimensions.LANE_WIDTH / 2;
         sitcov.geom.Rect lane = sitcov.geom.Rect.spanning(a.x() - side.dx() * w, a.y() - side.dy() * w,
                 b.x() + side.dx() * w, b.y() + side.dy() * w);
-        for (Vehicle v : car.scene().vehicles()) {
-            if (v != car && v.isActive() && Math.abs(v.x() - junction.centre().x()) < half + EXIT_ROOM + 6
+        for (Vehicle v : car.trafficTracks()) {
+            if ( Math.abs(v.x() - junction.centre().x()) < half + EXIT_ROOM + 6
                     && Math.abs(v.y() - junction.centre().y()) < half + EXIT_ROOM + 6 && v.footprint().overlaps(lane)
                     && v.speed() < EXIT_BLOCKED_SPEED) {
                 return false;
@@ -243,7 +241,7 @@ final class JunctionDriver {
         if (!faults.isActive(Fault.HALF_THE_JUNCTIONS)) {
             return true;
         }
-        int half = car.scene().network().junctions().size() / 2;
+        int half = car.roads().junctions().size() / 2;
         if (junction.id() < half) {
             faults.reached(Fault.HALF_THE_JUNCTIONS);
             return true;
@@ -259,9 +257,9 @@ final class JunctionDriver {
         waypoint = car.waypoints().create(point.x(), point.y(), Waypoint.Kind.JUNCTION_EXIT);
         Waypoint wp = car.waypoints().lookup(waypoint);
         junctionCentre = junction.centre();
-        finishBeyond = CrossingPath.finishBeyond(car.scene().network(), junction, exit, wp.x(), wp.y());
+        finishBeyond = CrossingPath.finishBeyond(car.roads(), junction, exit, wp.x(), wp.y());
         path = CrossingPath.between(car.x(), car.y(), arrival, wp.x(), wp.y(), exit, junction.centre().x(),
-                junction.centre().y(), AutonomousCar.REAR_AXLE);
+                junction.centre().y(), BuiltinCar.REAR_AXLE);
         crossing = true;
         exitsTaken[junction.id()][exit.ordinal()]++;
     }

@@ -56,6 +56,11 @@ public final class JunctionOccupancy {
         return holder[junction] == vehicle;
     }
 
+    /** The tick the junction's holder was given it. */
+    public long since(int junction) {
+        return since[junction];
+    }
+
     /** The vehicle holding the junction, or -1. */
     public int holder(int junction) {
         return holder[junction];

@@ -1,5 +1,7 @@
 package sitcov.vehicles;
 
+import sitcov.control.Vehicle;
+import java.util.List;
 import sitcov.geom.Bearing;
 import sitcov.geom.Box;
 import sitcov.geom.Compass;
@@ -67,7 +69,8 @@ final class Lidar {
      * Sweeps around {@code centreBearing} from ({@code x}, {@code y}); hits are expressed in the
      * frame of {@code lane}. Returns the number of hits.
      */
-    int sweep(double x, double y, double centreBearing, Compass lane, Scene scene, Vehicle self) {
+    int sweep(double x, double y, double centreBearing, Compass lane, List<Box> parkedBodies, List<Vehicle> vehicles,
+              Vehicle self) {
         hits = 0;
         originX = x;
         originY = y;
@@ -76,8 +79,8 @@ final class Lidar {
         double reachSq = (RANGE + 5) * (RANGE + 5);
         double fx = Math.sin(Math.toRadians(centreBearing));
         double fy = Math.cos(Math.toRadians(centreBearing));
-        for (int each = 0, count = scene.parkedBodies().size(); each < count; each++) {
-            Box body = scene.parkedBodies().get(each);
+        for (int each = 0, count = parkedBodies.size(); each < count; each++) {
+            Box body = parkedBodies.get(each);
             // the fan looks forward: a parked car wholly behind the sensor cannot be hit
             double ahead = (body.centreX() - x) * fx + (body.centreY() - y) * fy;
             if (n < MAX_OBJECTS && ahead > -Dimensions.CAR_LENGTH && distanceSq(body, x, y) <= reachSq) {
@@ -85,8 +88,8 @@ final class Lidar {
                 objects[n++] = body;
             }
         }
-        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
-            Vehicle v = scene.vehicles().get(each);
+        for (int each = 0, count = vehicles.size(); each < count; each++) {
+            Vehicle v = vehicles.get(each);
             if (v != self && v.isActive() && n < MAX_OBJECTS
                     && (v.x() - x) * (v.x() - x) + (v.y() - y) * (v.y() - y) <= reachSq) {
                 objectParked[n] = false;

@@ -1,5 +1,6 @@
 package sitcov.vehicles;
 
+import sitcov.control.Vehicle;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.random.RandomGenerator;

@@ -36,7 +36,7 @@ final class Overtaker {
     /** A Target closer than the tight return past the row, but at least this far, is turned in to sharply. */
     static final double SHARP_RETURN = 1.0;
 
-    private final AutonomousCar car;
+    private final BuiltinCar car;
     private final FaultSwitchboard faults;
     private final SqueezeIn squeezeIn;
     private final ParkedCarSightings sightings;
@@ -46,7 +46,7 @@ final class Overtaker {
     private boolean toTarget;
     private Compass lane;
 
-    Overtaker(AutonomousCar car, FaultSwitchboard faults) {
+    Overtaker(BuiltinCar car, FaultSwitchboard faults) {
         this.car = car;
         this.faults = faults;
         this.squeezeIn = new SqueezeIn(car);
@@ -68,7 +68,7 @@ final class Overtaker {
             stage = OvertakingStage.NOT_OVERTAKING;
             return;
         }
-        var target = car.scene().target().position();
+        var target = car.target().position();
         double targetU = LaneFrame.u(lane, car.x(), car.y(), target.x(), target.y());
         double targetV = LaneFrame.v(lane, car.x(), car.y(), target.x(), target.y());
         if (targetU > -1 && targetU < s.nearest() && Math.abs(targetV - laneCentre) < 1.6) {
@@ -140,7 +140,7 @@ final class Overtaker {
                 end();
                 return;
             }
-            intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(laneCentre, AutonomousCar.LOOKAHEAD)), "overtaking");
+            intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(laneCentre, BuiltinCar.LOOKAHEAD)), "overtaking");
             return;
         }
         // pulling out is only done once the car is across, not merely level with the waypoint
@@ -270,13 +270,13 @@ final class Overtaker {
 
     /** Where the Target lies across the lane frame, from the car. */
     private double targetAside() {
-        var target = car.scene().target().position();
+        var target = car.target().position();
         return LaneFrame.v(lane, car.x(), car.y(), target.x(), target.y());
     }
 
     /** How far ahead the Target lies when it is in the car's own lane ahead, else infinity. */
     private double targetAheadInLane(double laneCentre) {
-        var target = car.scene().target().position();
+        var target = car.target().position();
         double u = LaneFrame.u(lane, car.x(), car.y(), target.x(), target.y());
         double v = LaneFrame.v(lane, car.x(), car.y(), target.x(), target.y());
         return u > 0 && Math.abs(v - laneCentre) < 1.6 ? u : Double.POSITIVE_INFINITY;

@@ -16,10 +16,10 @@ final class ParkedCarSightings {
     /** A car parked on the other side less than this far behind the car's front still stands beside it. */
     static final double BESIDE = 2.5;
 
-    private final AutonomousCar car;
+    private final BuiltinCar car;
     private final FaultSwitchboard faults;
 
-    ParkedCarSightings(AutonomousCar car, FaultSwitchboard faults) {
+    ParkedCarSightings(BuiltinCar car, FaultSwitchboard faults) {
         this.car = car;
         this.faults = faults;
     }
@@ -32,11 +32,11 @@ final class ParkedCarSightings {
     Sighting look(Compass lane, double laneCentre) {
         Lidar lidar = car.lidar();
         if (!faults.isActive(Fault.OBSTACLE_SEARCH_ALONG_HEADING)) {
-            lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.scene(), car);
+            lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.obstacles(), car.trafficTracks(), car);
             return sighting(lidar, laneCentre, 0);
         }
         // the faulty car takes the road to run along its heading: hits are read in the heading's frame
-        int hits = lidar.sweep(car.x(), car.y(), car.heading(), lane, car.scene(), car);
+        int hits = lidar.sweep(car.x(), car.y(), car.heading(), lane, car.obstacles(), car.trafficTracks(), car);
         Sighting faulty = sighting(lidar, laneCentre, Math.toRadians(Bearing.turn(lane.bearing(), car.heading())));
         if (hits > 0 && !faulty.equals(sighting(lidar, laneCentre, 0))) {
             faults.effective(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
@@ -78,7 +78,7 @@ final class ParkedCarSightings {
     boolean ownLaneFreeBeside(double laneCentre) {
         Lidar lidar = car.lidar();
         for (int h = 0; h < lidar.hits(); h++) {
-            if (lidar.isParkedCar(h) && lidar.u(h) > -AutonomousCar.REAR_AXLE - 1
+            if (lidar.isParkedCar(h) && lidar.u(h) > -BuiltinCar.REAR_AXLE - 1
                     && lidar.u(h) < Overtaker.PULL_IN_AHEAD + 1 && Math.abs(lidar.v(h) - laneCentre) < 1.5) {
                 return false;
             }
@@ -106,7 +106,7 @@ final class ParkedCarSightings {
     /** Sweeps again: the distance to the nearest parked car inside the width the car sweeps ahead of it, or NaN. */
     double parkedCarInTheWay(Compass lane) {
         Lidar lidar = car.lidar();
-        int hits = lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.scene(), car);
+        int hits = lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.obstacles(), car.trafficTracks(), car);
         // the width the car sweeps lies along its heading, which pulling out turns away from the lane
         double phi = Math.toRadians(Bearing.turn(lane.bearing(), car.heading()));
         double cos = Math.cos(phi);

@@ -1,9 +1,14 @@
 package sitcov.vehicles;
 
+import sitcov.control.Vehicle;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.random.RandomGenerator;
+import sitcov.control.Controller;
+import sitcov.control.ControllerFactory;
+import sitcov.control.RunStart;
+import sitcov.control.Vehicle;
 import sitcov.engine.SimState;
 import sitcov.faults.FaultSwitchboard;
 import sitcov.geom.Box;
@@ -51,11 +56,21 @@ public final class Scene {
      * faults) and a moving car at each moving-car start, all scheduled every tick from tick 0.
      */
     public static Scene start(WorldMap map, SimState state, FaultSwitchboard faults) {
+        return start(map, state, BuiltinCar.variant(faults));
+    }
+
+    /**
+     * Builds the scene of {@code map} for one run: the car under test at its start, driven by the
+     * controller {@code controllers} makes for this run, and a moving car at each moving-car start,
+     * all scheduled every tick from tick 0 (the car under test first).
+     */
+    public static Scene start(WorldMap map, SimState state, ControllerFactory controllers) {
         Scene scene = new Scene(map, state);
         StartPose start = map.layout().carStart()
                 .orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no start for the car"));
         map.layout().target().orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no Target"));
-        AutonomousCar car = new AutonomousCar(scene, start, faults, state.random(AutonomousCar.DECISIONS_STREAM));
+        Controller controller = controllers.start(new RunStart(map, state.seed(), state.streams(), state::tick));
+        AutonomousCar car = new AutonomousCar(scene, start, controller);
         scene.setAutonomousCar(car);
         state.schedule().scheduleRepeating(0, VEHICLE_ORDERING, 1, car);
         RandomGenerator choices = state.random(MovingCar.CHOICES_STREAM);

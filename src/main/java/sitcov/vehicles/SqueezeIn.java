@@ -21,12 +21,12 @@ final class SqueezeIn {
     /** How deep, from its side to the kerb, the row is taken to be. */
     static final double ROW_DEPTH = 3;
 
-    private final AutonomousCar car;
+    private final BuiltinCar car;
     private Compass lane;
     /** Where the row ends, as a coordinate along the road, so it stays put while the car moves; NaN when not squeezing in. */
     private double rowEndAlong = Double.NaN;
 
-    SqueezeIn(AutonomousCar car) {
+    SqueezeIn(BuiltinCar car) {
         this.car = car;
     }
 
@@ -49,7 +49,7 @@ final class SqueezeIn {
      * (passed beyond reach), and the manoeuvre is over.
      */
     boolean steer(Intent intent, double laneCentre) {
-        var target = car.scene().target().position();
+        var target = car.target().position();
         if (LaneFrame.u(lane, car.x(), car.y(), target.x(), target.y()) < -TargetSeeker.CAPTURE_DISTANCE) {
             return false;
         }
@@ -74,7 +74,7 @@ final class SqueezeIn {
      * {@code speed} keeps clear of the row: everything short of its end and beyond its side, with margins.
      */
     private boolean tailClear(double bearing, double speed, double rowEnd, double face) {
-        double pivot = AutonomousCar.REAR_AXLE;
+        double pivot = BuiltinCar.REAR_AXLE;
         double nx = car.x() - pivot * Bearing.dx(car.heading()) + (pivot + speed) * Bearing.dx(bearing);
         double ny = car.y() - pivot * Bearing.dy(car.heading()) + (pivot + speed) * Bearing.dy(bearing);
         Box next = Box.behind(nx, ny, bearing, Dimensions.AUTONOMOUS_CAR_LENGTH, Dimensions.AUTONOMOUS_CAR_WIDTH);

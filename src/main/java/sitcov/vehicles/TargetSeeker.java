@@ -12,7 +12,7 @@ import sitcov.world.Target;
  * on it. It counts as reached within 1.5 m, in the car's own lane.
  */
 final class TargetSeeker {
-    static final double CAPTURE_DISTANCE = 1.5;
+    static final double CAPTURE_DISTANCE = TargetArrival.CAPTURE_DISTANCE;
     static final double SEEK_DISTANCE = 15;
     static final double DIRECT_DISTANCE = 4.5;
     /** How far the car's front centre may move off its lane centre and keep its body in the lane. */
@@ -20,16 +20,16 @@ final class TargetSeeker {
     /** A Target further than this to the side of the car cannot be reached without changing lane. */
     static final double REACHABLE_ASIDE = 1.4;
 
-    private final AutonomousCar car;
+    private final BuiltinCar car;
     private final FaultSwitchboard faults;
 
-    TargetSeeker(AutonomousCar car, FaultSwitchboard faults) {
+    TargetSeeker(BuiltinCar car, FaultSwitchboard faults) {
         this.car = car;
         this.faults = faults;
     }
 
     void plan(Intent intent, Compass lane, LaneEstimate estimate) {
-        Target target = car.scene().target();
+        Target target = car.target();
         double u = LaneFrame.u(lane, car.x(), car.y(), target.position().x(), target.position().y());
         double v = LaneFrame.v(lane, car.x(), car.y(), target.position().x(), target.position().y());
         if (u < 0 || u > SEEK_DISTANCE) {
@@ -59,16 +59,6 @@ final class TargetSeeker {
         // aiming no nearer than the direct distance keeps the turn gentle: a sharp one in the last
         // metres swings the body (it turns about its rear axle) over the centre line or the kerb
         intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(aim, Math.max(DIRECT_DISTANCE, u))), "target");
-    }
-
-    /** Whether the car now stands on the Target, in its own lane. */
-    boolean isReached(Compass lane, LaneEstimate estimate) {
-        Target target = car.scene().target();
-        if (target.position().distanceTo(car.x(), car.y()) >= CAPTURE_DISTANCE) {
-            return false;
-        }
-        double v = LaneFrame.v(lane, car.x(), car.y(), target.position().x(), target.position().y());
-        return inLane(v, estimate.laneCentre());
     }
 
     private static boolean inLane(double v, double laneCentre) {

@@ -1,5 +1,8 @@
 package sitcov.vehicles;
 
+import java.util.List;
+
+import sitcov.control.Vehicle;
 import sitcov.geom.Bearing;
 import sitcov.geom.Compass;
 
@@ -31,7 +34,7 @@ final class TrafficSensor {
      * running {@code lane} and its centre {@code laneCentre} metres to the car's right. Other-lane
      * vehicles between {@code fromU} and {@code toU} metres ahead mark the other lane occupied.
      */
-    void scan(Scene scene, Vehicle self, Compass lane, double laneCentre, double fromU, double toU) {
+    void scan(List<Vehicle> vehicles, Vehicle self, Compass lane, double laneCentre, double fromU, double toU) {
         double x = self.x();
         double y = self.y();
         double heading = self.heading();
@@ -47,8 +50,8 @@ final class TrafficSensor {
         // the path ahead is judged along the car's own heading (it may be turning); the lanes along the lane
         double hx = self.headingDx();
         double hy = self.headingDy();
-        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
-            Vehicle other = scene.vehicles().get(each);
+        for (int each = 0, count = vehicles.size(); each < count; each++) {
+            Vehicle other = vehicles.get(each);
             if (other == self || !other.isActive()) {
                 continue;
             }

@@ -19,8 +19,12 @@ import sitcov.oracle.Accident;
 import sitcov.render.MapRenderer;
 import sitcov.render.MapShapes;
 import sitcov.render.OutcomeText;
+import sitcov.control.SelfReport;
+import sitcov.geom.Compass;
 import sitcov.vehicles.AutonomousCar;
-import sitcov.vehicles.Vehicle;
+import sitcov.vehicles.BuiltinCar;
+import sitcov.vehicles.OvertakingStage;
+import sitcov.control.Vehicle;
 
 /**
  * Paints one live run as it stands: the map (drawn once), the car's sensors (the camera's 90° fan to
@@ -130,24 +134,30 @@ public final class RunPainter {
             return "Run over: " + OutcomeText.of(run.detector().outcome(), run.detector().ticks(), run.detector().accidents());
         }
         AutonomousCar car = run.scene().autonomousCar();
+        SelfReport said = car.selfReport();
+        String stage = said.stage() == null ? OvertakingStage.NOT_OVERTAKING.name() : said.stage();
         return String.format(Locale.ROOT, "%s · %.1f km/h · lane %s · %s%s%s · steered by %s · speed set by %s",
-                run.tick() < 0 ? "not started (press Play or Step)" : "tick " + run.tick(), car.speed() * 18, car.lane(),
-                car.overtakingStage().name().toLowerCase(Locale.ROOT).replace('_', ' '),
-                car.isCrossingJunction() ? " · crossing a junction" : "", car.isWaitingAtJunction() ? " · waiting" : "",
-                car.steeredBy() == null ? "nothing yet" : car.steeredBy(), car.limitedBy() == null ? "nothing"
-                        : car.limitedBy());
+                run.tick() < 0 ? "not started (press Play or Step)" : "tick " + run.tick(), car.speed() * 18,
+                said.lane() == null ? Compass.nearest(car.heading()) : said.lane(),
+                stage.toLowerCase(Locale.ROOT).replace('_', ' '),
+                said.crossingJunction() ? " · crossing a junction" : "", said.waitingAtJunction() ? " · waiting" : "",
+                said.steeredBy() == null ? "nothing yet" : said.steeredBy(), said.limitedBy() == null ? "nothing"
+                        : said.limitedBy());
     }
 
     /**
      * The camera's reach (shaded fan) and the samples where its rays met a marking this tick (yellow
      * dots); the LIDAR's reach (outlined half disc) and the rays of its last sweep that hit something.
      */
-    private void sensors(Graphics2D g, AutonomousCar car) {
+    private void sensors(Graphics2D g, AutonomousCar body) {
+        if (!(body.controller() instanceof BuiltinCar car)) {
+            return;
+        }
         g.setColor(CAMERA);
-        g.fill(fan(car.x(), car.y(), car.heading(), 45, CAMERA_RANGE));
+        g.fill(fan(body.x(), body.y(), body.heading(), 45, CAMERA_RANGE));
         g.setColor(LIDAR);
         g.setStroke(new BasicStroke(1.5f / scale));
-        g.draw(fan(car.x(), car.y(), car.heading(), 90, LIDAR_RANGE));
+        g.draw(fan(body.x(), body.y(), body.heading(), 90, LIDAR_RANGE));
         g.setStroke(new BasicStroke(0.8f / scale));
         for (int h = 0; h < car.lidarHits(); h++) {
             g.draw(new java.awt.geom.Line2D.Double(car.lidarOriginX(), car.lidarOriginY(), car.lidarHitX(h), car.lidarHitY(h)));

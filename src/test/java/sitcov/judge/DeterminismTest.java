@@ -13,7 +13,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import sitcov.oracle.RunResult;
-import sitcov.vehicles.Vehicle;
+import sitcov.control.Vehicle;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
 

@@ -20,7 +20,7 @@ import sitcov.judge.Simulator;
 import sitcov.vehicles.AutonomousCar;
 import sitcov.vehicles.Dynamics;
 import sitcov.vehicles.Scene;
-import sitcov.vehicles.Vehicle;
+import sitcov.control.Vehicle;
 import sitcov.world.Axis;
 import sitcov.world.Junction;
 import sitcov.world.Layout;
@@ -361,7 +361,7 @@ class AccidentDetectorTest {
         assertTrue(car.speed() > 0, "the car does not move");
         assertEquals(90, car.heading(), 10);
         assertEquals(48.5, car.y(), 0.3);
-        assertEquals(Compass.EAST, car.lane());
+        assertEquals(Compass.EAST, car.selfReport().lane());
         return scene;
     }
 

@@ -65,7 +65,7 @@ class AutonomousCarBehaviourTest {
 
         RunRecord run = Simulator.run(map, 1, Set.of(), (tick, scene, detector) -> {
             AutonomousCar car = scene.autonomousCar();
-            OvertakingStage stage = car.overtakingStage();
+            OvertakingStage stage = builtin(car).overtakingStage();
             if (stages.isEmpty() || stages.get(stages.size() - 1) != stage) {
                 stages.add(stage);
                 if (stage == OvertakingStage.START) {
@@ -100,7 +100,7 @@ class AutonomousCarBehaviourTest {
         double frontWhileWaiting = 0;
         while (state.step() && state.tick() < 400) {
             AutonomousCar car = scene.autonomousCar();
-            if (car.isWaitingAtJunction()) {
+            if (builtin(car).isWaitingAtJunction()) {
                 firstWait = firstWait < 0 ? state.tick() : firstWait;
                 frontWhileWaiting = Math.max(frontWhileWaiting, car.x());
             }
@@ -141,10 +141,10 @@ class AutonomousCarBehaviourTest {
         boolean waited = false;
         double lowest = Double.POSITIVE_INFINITY;
         double highest = 0;
-        while (state.step() && state.tick() < 400 && !scene.autonomousCar().isCrossingJunction()) {
+        while (state.step() && state.tick() < 400 && !builtin(scene.autonomousCar()).isCrossingJunction()) {
             AutonomousCar car = scene.autonomousCar();
-            waited |= car.isWaitingAtJunction() && car.speed() == 0;
-            if (car.isWaitingAtJunction()) {
+            waited |= builtin(car).isWaitingAtJunction() && car.speed() == 0;
+            if (builtin(car).isWaitingAtJunction()) {
                 lowest = Double.POSITIVE_INFINITY;
                 highest = 0;
             } else if (waited) {
@@ -166,7 +166,7 @@ class AutonomousCarBehaviourTest {
                     new StartPose(new Vec2(40, 48.5), Compass.EAST));
             boolean[] overtook = {false};
             RunRecord run = Simulator.run(Situations.withoutTraffic(layout), 1, Set.of(),
-                    (tick, scene, detector) -> overtook[0] |= scene.autonomousCar().overtakingStage().isPassing());
+                    (tick, scene, detector) -> overtook[0] |= builtin(scene.autonomousCar()).overtakingStage().isPassing());
             assertTrue(overtook[0], "gap " + gap + ": the car had to pass the parked car");
             assertEquals(Outcome.TARGET_REACHED, run.result().outcome(), "gap " + gap + ": " + run.result());
             assertTrue(run.result().ticks() < 400, "gap " + gap + ": no circling, " + run.result().ticks() + " ticks");
@@ -214,5 +214,9 @@ class AutonomousCarBehaviourTest {
             assertEquals(List.of(), result.accidents(), "seed " + seed + ": " + result);
             assertEquals(Outcome.TARGET_REACHED, result.outcome(), "seed " + seed + ": " + result);
         }
+    }
+
+    private static BuiltinCar builtin(AutonomousCar car) {
+        return (BuiltinCar) car.controller();
     }
 }

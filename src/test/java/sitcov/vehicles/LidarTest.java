@@ -112,15 +112,15 @@ class LidarTest {
         Scene scene = new Scene(Situations.withoutTraffic(Situations.straight(List.of(Situations.parkedInEastboundLane(0, 63)))),
                 new SimState(1));
         Lidar standing = new Lidar(scene.network());
-        int before = standing.sweep(X, Y, Compass.EAST.bearing(), Compass.EAST, scene, null);
+        int before = standing.sweep(X, Y, Compass.EAST.bearing(), Compass.EAST, scene.parkedBodies(), scene.vehicles(), null);
         assertTrue(before > 0 && parkedHits(standing) == before, "the parked car alone, 20.5 m ahead, is seen");
 
         // a moving car stands 5 to 10 m ahead in the same lane, between the sensor and the parked car
         scene.addMovingCar(new MovingCar(1, scene, new StartPose(new Vec2(50, Y), Compass.EAST),
                 new java.util.SplittableRandom(1), new java.util.SplittableRandom(2)));
-        int after = standing.sweep(X, Y, Compass.EAST.bearing(), Compass.EAST, scene, null);
+        int after = standing.sweep(X, Y, Compass.EAST.bearing(), Compass.EAST, scene.parkedBodies(), scene.vehicles(), null);
         Lidar fresh = new Lidar(scene.network());
-        assertEquals(fresh.sweep(X, Y, Compass.EAST.bearing(), Compass.EAST, scene, null), after);
+        assertEquals(fresh.sweep(X, Y, Compass.EAST.bearing(), Compass.EAST, scene.parkedBodies(), scene.vehicles(), null), after);
         for (int i = 0; i < after; i++) {
             assertEquals(fresh.u(i), standing.u(i), 0, "hit " + i);
             assertEquals(fresh.v(i), standing.v(i), 0, "hit " + i);
@@ -145,7 +145,7 @@ class LidarTest {
     private static Lidar sweepFrom(double x, Layout layout) {
         Scene scene = new Scene(Situations.withoutTraffic(layout), new SimState(1));
         Lidar lidar = new Lidar(scene.network());
-        int hits = lidar.sweep(x, Y, Compass.EAST.bearing(), Compass.EAST, scene, null);
+        int hits = lidar.sweep(x, Y, Compass.EAST.bearing(), Compass.EAST, scene.parkedBodies(), scene.vehicles(), null);
         assertEquals(hits, lidar.hits());
         return lidar;
     }

@@ -16,6 +16,7 @@ import sitcov.oracle.Outcome;
 import sitcov.oracle.RunResult;
 import sitcov.render.MapRenderer;
 import sitcov.vehicles.AutonomousCar;
+import sitcov.vehicles.BuiltinCar;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
 
@@ -31,7 +32,7 @@ class RunPainterTest {
 
     /** The colour at the centre of the car's footprint, in the painted image. */
     private static int carPixel(RunPainter painter, BufferedImage image) {
-        AutonomousCar car = painter.run().scene().autonomousCar();
+        BuiltinCar car = (BuiltinCar) painter.run().scene().autonomousCar().controller();
         var centre = car.footprint().centre();
         int x = (int) Math.round(centre.x() * painter.pixelsPerMetre());
         int y = RunPainter.HEADER + (int) Math.round(centre.y() * painter.pixelsPerMetre());
@@ -47,7 +48,7 @@ class RunPainterTest {
         }
         BufferedImage image = paint(painter);
         assertEquals(RunPainter.CAR.getRGB() & 0xFFFFFF, carPixel(painter, image), "the car's colour at its centre");
-        AutonomousCar car = painter.run().scene().autonomousCar();
+        BuiltinCar car = (BuiltinCar) painter.run().scene().autonomousCar().controller();
         assertTrue(car.cameraHits() > 0, "the camera saw markings");
         int yellow = 0;
         for (int h = 0; h < car.cameraHits(); h++) {

@@ -1,4 +1,4 @@
-package sitcov.vehicles;
+package sitcov.control;
 
 import sitcov.geom.Bearing;
 import sitcov.geom.Box;

@@ -1,0 +1,16 @@
+package sitcov.control;
+
+/**
+ * The system under test: one run's driver of the car. The world calls {@link #step} once a tick,
+ * before any other vehicle moves; the controller reads the observation and fills the command.
+ * Implementations: the builtin car (its faults are its variants) and a program speaking the
+ * JSON-Lines protocol.
+ */
+public interface Controller {
+    /** Decides this tick's command from what the car observes now; {@code out} arrives cleared. */
+    void step(Observation now, Command out);
+
+    /** The run is over (Target reached, timeout, or stopped); the default does nothing. */
+    default void end(RunEnd how) {
+    }
+}

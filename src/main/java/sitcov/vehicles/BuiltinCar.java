@@ -1,0 +1,357 @@
+package sitcov.vehicles;
+
+import sitcov.control.Vehicle;
+import java.util.List;
+import java.util.random.RandomGenerator;
+import sitcov.control.Command;
+import sitcov.control.Controller;
+import sitcov.control.ControllerFactory;
+import sitcov.control.Observation;
+import sitcov.control.SpeedChange;
+import sitcov.control.Vehicle;
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSwitchboard;
+import sitcov.geom.Bearing;
+import sitcov.geom.Box;
+import sitcov.geom.Compass;
+import sitcov.world.Dimensions;
+import sitcov.world.Road;
+import sitcov.world.RoadNetwork;
+import sitcov.world.Target;
+import sitcov.world.WorldMap;
+import sitcov.world.StartPose;
+
+/**
+ * The builtin controller: sitcov's own autonomous car, the first system under test, its twenty
+ * seeded faults its variants. Each tick it takes what the observation gives it — its pose, the road
+ * map and Target, the traffic and obstacles its radar and LIDAR report, the junctions' right-of-way
+ * — looks for road markings (camera) and parked cars (LIDAR) among them, lets its behaviours state
+ * what they want (junctions, overtaking, keeping its distance, reaching the Target, keeping its
+ * lane) and commands one speed change and one turn of at most 15°. Seeded faults act at the seams
+ * each behaviour names. It keeps a model of its own body to plan with, set each tick to the pose
+ * the world reports; the world alone moves the car.
+ */
+public final class BuiltinCar implements Controller, Vehicle {
+    /** The stream its own random decisions (the choice among exits already taken) come from. */
+    public static final String DECISIONS_STREAM = "autonomous-car.decisions";
+    static final double LOOKAHEAD = 6;
+    static final double REAR_AXLE = AutonomousCar.REAR_AXLE;
+    /** A lane centre seen further than this to the side, outside an overtake, is not believed. */
+    static final double IMPLAUSIBLE_OFFSET = 1.3;
+
+    private final RoadNetwork roads;
+    private final Target target;
+    private final FaultSwitchboard faults;
+    private final Body body;
+    private Observation now;
+    private final JunctionRequests rightOfWay = new JunctionRequests();
+    private final CameraSettings cameraSettings;
+    private final MarkingCamera camera;
+    private final Lidar lidar;
+    private final TrafficSensor traffic = new TrafficSensor();
+    private final Waypoints waypoints;
+    private final JunctionDriver junctions;
+    private final Overtaker overtaker;
+    private final TargetSeeker targetSeeker;
+    private final Intent intent = new Intent();
+    private Compass lane;
+    private LaneEstimate estimate = LaneEstimate.NOTHING_SEEN;
+    private final LaneMemory laneMemory = new LaneMemory();
+    private double laneCentre;
+
+    /**
+     * The builtin car for one run on {@code map}, starting at its start pose, with the faults of
+     * {@code faults} switched on; its random choices come from {@code decisions}.
+     */
+    public BuiltinCar(WorldMap map, FaultSwitchboard faults, RandomGenerator decisions) {
+        StartPose start = map.layout().carStart()
+                .orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no start for the car"));
+        this.roads = RoadNetwork.of(map.layout());
+        this.target = map.layout().target()
+                .orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no Target"));
+        this.faults = faults;
+        this.body = new Body(start.position().x(), start.position().y(), start.heading().bearing(), REAR_AXLE);
+        this.lane = start.heading();
+        this.cameraSettings = CameraFaults.settings(faults);
+        this.camera = new MarkingCamera(roads);
+        this.lidar = new Lidar(roads);
+        this.waypoints = new Waypoints(faults);
+        this.junctions = new JunctionDriver(this, faults, decisions, Route.plan(roads, target), roads.junctions().size());
+        this.overtaker = new Overtaker(this, faults);
+        this.targetSeeker = new TargetSeeker(this, faults);
+    }
+
+    /** The builtin car with the faults of {@code faults} switched on, for every run it is asked for. */
+    public static ControllerFactory variant(FaultSwitchboard faults) {
+        return run -> new BuiltinCar(run.map(), faults, run.streams().stream(DECISIONS_STREAM));
+    }
+
+    @Override
+    public void step(Observation observation, Command out) {
+        now = observation;
+        body.sync(observation.x(), observation.y(), observation.heading(), observation.speed());
+        rightOfWay.startTick(observation.rightOfWay(), out);
+        intent.reset();
+        followHeadingIntoLane();
+        estimate = lookForMarkings();
+        laneCentre = laneMemory.laneCentre(lane, body.x(), body.y(), estimate);
+        traffic.scan(observation.traffic(), this, lane, laneCentre, -5, 40);
+        junctions.releaseIfLeft();
+        junctions.plan(intent, lane);
+        if (!junctions.isCrossing()) {
+            overtaker.plan(intent, lane, laneCentre);
+        }
+        keepDistance();
+        targetSeeker.plan(intent, lane, estimate);
+        keepLane();
+        drive(out);
+        out.report().overtaking(overtaker.stage().isPassing()).crossingJunction(junctions.isCrossing())
+                .waitingAtJunction(junctions.isWaiting()).lane(lane).stage(overtaker.stage().name())
+                .limitedBy(intent.limitedBy()).steeredBy(intent.steeredBy());
+    }
+
+    /** Outside junctions and manoeuvres the lane direction follows the car's heading. */
+    private void followHeadingIntoLane() {
+        if (junctions.isCrossing() || overtaker.stage().isPassing()) {
+            return;
+        }
+        Compass nearest = Compass.nearest(body.heading());
+        if (Math.abs(Bearing.turn(body.heading(), nearest.bearing())) < 30) {
+            lane = nearest;
+        }
+    }
+
+    private LaneEstimate lookForMarkings() {
+        LaneEstimate seen = camera.look(body.x(), body.y(), lane, cameraSettings);
+        camera.keepHits();
+        if (cameraSettings != CameraSettings.STANDARD) {
+            LaneEstimate correct = camera.look(body.x(), body.y(), lane, CameraSettings.STANDARD);
+            CameraFaults.record(faults, !seen.equals(correct));
+        }
+        // Driving its lane, the car is never far off its lane centre: a sighting that says so is
+        // another road's lines, seen across a junction, and is not believed.
+        if (!overtaker.stage().isPassing() && Math.abs(seen.laneCentre()) > IMPLAUSIBLE_OFFSET) {
+            return LaneEstimate.NOTHING_SEEN;
+        }
+        return seen;
+    }
+
+    /** Keeps a stopping distance to whatever moves in its path. */
+    private void keepDistance() {
+        double gap = traffic.pathGap();
+        if (Double.isInfinite(gap)) {
+            return;
+        }
+        double lead = traffic.pathSpeed();
+        double room = lead >= 0
+                ? gap + Dynamics.stoppingDistance(lead) - lead - 2
+                : gap - 2 + 4 * lead;
+        intent.stopWithin(room, "traffic");
+    }
+
+    /** Steers to the lane centre the camera sees, a lookahead ahead; straight on when it sees none. */
+    private void keepLane() {
+        double offset = estimate.anySeen() ? estimate.laneCentre() : 0;
+        intent.steer(lane.bearing() - Math.toDegrees(Math.atan2(offset, LOOKAHEAD)), "lane");
+    }
+
+    /** Works the speed and turn out on its model body and commands them; the world then moves the car. */
+    private void drive(Command out) {
+        double speedBefore = body.speed();
+        double limit = intent.speedLimit();
+        if (intent.isCrawl() && limit >= Dynamics.CRAWL_CEILING) {
+            crawl();
+        } else {
+            body.approachSpeed(limit);
+        }
+        out.speedChange(SpeedChange.between(speedBefore, body.speed()));
+        out.steering(Body.turnTowards(body.heading(), intent.bearing(), Dynamics.MAX_TURN));
+    }
+
+    /** Holds speed in the crawl band (faults 5 and 6 act here). */
+    private void crawl() {
+        if (body.speed() < Dynamics.CRAWL_FLOOR) {
+            body.accelerate();
+            if (faults.isActive(Fault.CRAWL_DOUBLE_ACCELERATION)) {
+                body.accelerate();
+                faults.effective(Fault.CRAWL_DOUBLE_ACCELERATION);
+            }
+        } else if (body.speed() >= Dynamics.CRAWL_CEILING) {
+            body.brake();
+            if (faults.isActive(Fault.CRAWL_DOUBLE_BRAKING)) {
+                body.brake();
+                faults.effective(Fault.CRAWL_DOUBLE_BRAKING);
+            }
+        }
+    }
+
+    Road road(Compass direction) {
+        return Lanes.roadAlong(roads, body.x(), body.y(), direction);
+    }
+
+    void setLane(Compass direction) {
+        lane = direction;
+    }
+
+    RoadNetwork roads() {
+        return roads;
+    }
+
+    Target target() {
+        return target;
+    }
+
+    long tick() {
+        return now.tick();
+    }
+
+    /** Parked cars its LIDAR reports this tick. */
+    List<Box> obstacles() {
+        return now.obstacles();
+    }
+
+    /** Vehicles its radar reports this tick. */
+    List<Vehicle> trafficTracks() {
+        return now.traffic();
+    }
+
+    JunctionRequests rightOfWay() {
+        return rightOfWay;
+    }
+
+    Waypoints waypoints() {
+        return waypoints;
+    }
+
+    Lidar lidar() {
+        return lidar;
+    }
+
+    TrafficSensor traffic() {
+        return traffic;
+    }
+
+    public OvertakingStage overtakingStage() {
+        return overtaker.stage();
+    }
+
+    /** Whether it is turning through a junction square (being over the centre line is then justified). */
+    public boolean isCrossingJunction() {
+        return junctions.isCrossing();
+    }
+
+    /** How many of the camera's rays met a marking in this tick's look (a viewer draws them). */
+    public int cameraHits() {
+        return camera.keptHits();
+    }
+
+    public double cameraHitX(int hit) {
+        return camera.keptX(hit);
+    }
+
+    public double cameraHitY(int hit) {
+        return camera.keptY(hit);
+    }
+
+    /** How many rays of the LIDAR's last sweep hit something; where it stood and where they hit. */
+    public int lidarHits() {
+        return lidar.hits();
+    }
+
+    public double lidarOriginX() {
+        return lidar.originX();
+    }
+
+    public double lidarOriginY() {
+        return lidar.originY();
+    }
+
+    public double lidarHitX(int hit) {
+        return lidar.worldX(hit);
+    }
+
+    public double lidarHitY(int hit) {
+        return lidar.worldY(hit);
+    }
+
+    public boolean isWaitingAtJunction() {
+        return junctions.isWaiting();
+    }
+
+    /** The lane direction it is driving. */
+    public Compass lane() {
+        return lane;
+    }
+
+    /** Where it believes its lane centre is, metres to its right. */
+    public double believedLaneCentre() {
+        return laneCentre;
+    }
+
+    /** Which behaviour set the speed limit in the last tick (null when none did). */
+    public String limitedBy() {
+        return intent.limitedBy();
+    }
+
+
+
+    /** Which behaviour steered in the last tick. */
+    public String steeredBy() {
+        return intent.steeredBy();
+    }
+
+    @Override
+    public int id() {
+        return AutonomousCar.ID;
+    }
+
+    @Override
+    public double x() {
+        return body.x();
+    }
+
+    @Override
+    public double y() {
+        return body.y();
+    }
+
+    @Override
+    public double heading() {
+        return body.heading();
+    }
+
+    @Override
+    public double headingDx() {
+        return body.headingDx();
+    }
+
+    @Override
+    public double headingDy() {
+        return body.headingDy();
+    }
+
+    @Override
+    public double speed() {
+        return body.speed();
+    }
+
+    @Override
+    public double length() {
+        return Dimensions.AUTONOMOUS_CAR_LENGTH;
+    }
+
+    @Override
+    public Box footprint() {
+        return body.footprint(length(), width());
+    }
+
+    @Override
+    public double width() {
+        return Dimensions.AUTONOMOUS_CAR_WIDTH;
+    }
+
+    @Override
+    public boolean isActive() {
+        return true;
+    }
+}

@@ -39,7 +39,7 @@ class ArchitectureTest {
             Map.entry("stats", Set.of()),
             Map.entry("world", Set.of("engine", "geom")),
             Map.entry("faults", Set.of("engine")),
-            Map.entry("control", Set.of("world", "engine", "geom")),
+            Map.entry("control", Set.of("world", "faults", "engine", "geom")),
             Map.entry("vehicles", Set.of("control", "world", "faults", "engine", "geom")),
             Map.entry("oracle", Set.of("control", "vehicles", "world", "engine", "geom")),
             Map.entry("coverage", Set.of("world", "geom")),

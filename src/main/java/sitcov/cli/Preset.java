@@ -27,7 +27,7 @@ record Preset(Path file, ExperimentConfig config) {
 
     private static Set<String> keys() {
         Set<String> keys = new java.util.TreeSet<>(List.of("name", "master_seed", "candidates", "replications", "faults",
-                "budget", "faulty_runs", "grid", "description", "sweep", "drivers", "candidate_limit"));
+                "budget", "faulty_runs", "grid", "description", "sweep", "drivers", "candidate_limit", "controller"));
         keys.addAll(AnalysisPlan.keys());
         return Set.copyOf(keys);
     }
@@ -112,8 +112,10 @@ record Preset(Path file, ExperimentConfig config) {
             GridDefinition grid = gridFile == null ? GridDefinition.paper() : GridDefinition.read(Path.of(gridFile.strip()));
             field = "analysis";
             AnalysisPlan analysis = AnalysisPlan.read(p::getProperty, drivers);
+            field = "controller";
+            String controller = ControllerChoice.check(p.getProperty("controller", ExperimentConfig.BUILTIN).strip());
             return new ExperimentConfig(name, seed, candidates, replications, faults, budget, grid, drivers, sweep,
-                    candidateLimit, faultyRuns, analysis);
+                    candidateLimit, faultyRuns, analysis, controller);
         } catch (IOException e) {
             throw new UsageException("run: " + file + ": cannot read its grid: " + sitcov.results.IoReason.of(e) + ".");
         } catch (NumberFormatException e) {

@@ -12,6 +12,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.stream.Stream;
 import sitcov.drivers.Drivers;
+import sitcov.control.ControllerSource;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentRunner;
 import sitcov.experiment.Journal;
@@ -53,7 +54,7 @@ final class RunCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--out", "--seed", "--replications", "--threads", "--shard",
-                "--resume"), Set.of("--dry-run"));
+                "--resume", "--controller"), Set.of("--dry-run"));
         int threads = options.threads(err);
         if (options.value("--resume").isPresent()) {
             if (options.has("--dry-run")) {
@@ -68,6 +69,9 @@ final class RunCommand implements Command {
         Preset preset = Preset.read(Preset.locate(options.positional().get(0)), options.seed("--seed").orElse(null),
                 options.count("--replications", 1, ExperimentConfig.MAX_REPLICATIONS).orElse(null), drivers);
         ExperimentConfig config = preset.config();
+        if (options.value("--controller").isPresent()) {
+            config = config.withController(ControllerChoice.check(options.value("--controller").get()));
+        }
         Shard shard = shard(options, config);
         if (options.has("--dry-run")) {
             if (options.has("--out")) {
@@ -134,15 +138,31 @@ final class RunCommand implements Command {
         }
     }
 
+    private static void closeQuietly(ResultsRecorder recorder, PrintStream err, Path folder) {
+        try {
+            recorder.close();
+        } catch (IOException e) {
+            err.println("sitcov: run: could not close the journal in " + folder + ": " + IoReason.of(e) + ".");
+        }
+    }
+
     private int execute(ResultsRecorder recorder, Path folder, int threads, String note, PrintStream out, PrintStream err) {
         Manifest manifest = recorder.manifest();
         ExperimentConfig config = manifest.config();
         ProgressListener progress = new ProgressListener(err, err == System.err && System.console() != null,
                 System::nanoTime);
-        ExperimentRunner runner = new ExperimentRunner(config, drivers, manifest.shard(), recorder.journal(), threads,
-                System::nanoTime, List.of(recorder, progress));
-        err.println(plan(runner, config, manifest.shard(), threads) + ", into " + folder + note);
+        ControllerSource controllers;
         try {
+            controllers = ControllerChoice.open(config.controller(), folder);
+        } catch (UsageException e) {
+            err.println("sitcov: " + e.getMessage());
+            closeQuietly(recorder, err, folder);
+            return ExitCode.USAGE;
+        }
+        ExperimentRunner runner = new ExperimentRunner(config, drivers, manifest.shard(), recorder.journal(), threads,
+                System::nanoTime, List.of(recorder, progress), controllers);
+        err.println(plan(runner, config, manifest.shard(), threads) + ", into " + folder + note);
+        try (controllers) {
             runner.run();
         } catch (FolderLock.Lost e) {
             err.println("sitcov: run: " + e.getMessage() + "; it stopped there, and what it had judged went with the"

@@ -18,7 +18,10 @@ import sitcov.judge.FaultyRuns;
  */
 public record ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
                                BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
-                               int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis) {
+                               int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis, String controller) {
+    /** The controller an experiment tests unless its preset names another. */
+    public static final String BUILTIN = "builtin";
+
     public static final List<String> PAPER_DRIVERS = List.of("coverage-filter", "random");
     /**
      * Replications, or a sweep's map sets over all its budgets: far beyond any sound experiment (Arcuri &amp;
@@ -60,9 +63,24 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
             throw new IllegalArgumentException("the primary question's drivers " + analysis.primaryDrivers()
                     + " are not among the drivers " + drivers);
         }
+        Objects.requireNonNull(controller, "controller");
         faults = Set.copyOf(faults);
         drivers = List.copyOf(drivers);
         sweep = List.copyOf(sweep);
+    }
+
+    /** Testing the builtin car. */
+    public ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
+                            BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
+                            int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis) {
+        this(name, masterSeed, candidates, replications, faults, budget, grid, drivers, sweep, candidateLimit, faultyRuns,
+                analysis, BUILTIN);
+    }
+
+    /** The same experiment testing the controller {@code spec} names ({@code builtin} or {@code exec:COMMAND ARGS…}). */
+    public ExperimentConfig withController(String spec) {
+        return new ExperimentConfig(name, masterSeed, candidates, replications, faults, budget, grid, drivers, sweep,
+                candidateLimit, faultyRuns, analysis, spec);
     }
 
     /** The default analysis: distinct faults found, the first driver against the second, default margins. */

@@ -9,7 +9,9 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
+import sitcov.control.ControllerSource;
 import sitcov.faults.Fault;
+import sitcov.vehicles.BuiltinCar;
 
 /**
  * Runs an experiment's replications (those of one shard) in parallel and tells the listeners what
@@ -26,10 +28,18 @@ public final class ExperimentRunner {
     private final LongSupplier nanoClock;
     private final List<ExperimentListener> listeners;
     private final List<Fault> faults;
+    private final ControllerSource controllers;
     private volatile boolean halted;
 
+    /** A runner of an experiment on the builtin car. */
     public ExperimentRunner(ExperimentConfig config, DriverFactory drivers, Shard shard, Journal journal, int threads,
                             LongSupplier nanoClock, List<ExperimentListener> listeners) {
+        this(config, drivers, shard, journal, threads, nanoClock, listeners, BuiltinCar.SOURCE);
+    }
+
+    /** A runner whose worker threads take their controllers from {@code controllers} (which the caller closes). */
+    public ExperimentRunner(ExperimentConfig config, DriverFactory drivers, Shard shard, Journal journal, int threads,
+                            LongSupplier nanoClock, List<ExperimentListener> listeners, ControllerSource controllers) {
         for (String d : config.drivers()) {
             drivers.create(d);
         }
@@ -41,6 +51,12 @@ public final class ExperimentRunner {
         this.nanoClock = nanoClock;
         this.listeners = List.copyOf(listeners);
         this.faults = config.faultList();
+        this.controllers = controllers;
+    }
+
+    /** Where each worker thread gets its controller. */
+    ControllerSource controllers() {
+        return controllers;
     }
 
     /** The replications this run does: the plan's, or the shard's share of it. */

@@ -39,7 +39,8 @@ final class FreshJudge implements SessionJudge {
             judged = judgedBefore.judged();
         } else {
             world = r.map().get();
-            judged = MapRunner.judge(world, internal, host.faults(), host.config().faultyRuns());
+            judged = MapRunner.judge(world, internal, host.faults(), host.config().faultyRuns(),
+                    host.controllers().forThisThread());
         }
         List<Double> values = new ArrayList<>(r.criteria().length);
         for (double v : r.criteria()) {

@@ -1,11 +1,13 @@
 package sitcov.judge;
 
 import java.util.Set;
+import sitcov.control.ControllerFactory;
 import sitcov.engine.SimState;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
 import sitcov.oracle.AccidentDetector;
 import sitcov.oracle.RunResult;
+import sitcov.vehicles.BuiltinCar;
 import sitcov.vehicles.Scene;
 import sitcov.world.WorldMap;
 
@@ -23,13 +25,19 @@ public final class LiveRun {
     private final AccidentDetector detector;
     private boolean ended;
 
+    /** A run of the builtin car with {@code faults} switched on. */
     public LiveRun(WorldMap map, long internalSeed, Set<Fault> faults) {
+        this(map, internalSeed, faults, BuiltinCar.FACTORY);
+    }
+
+    /** A run of the controller {@code controller} makes, with {@code faults} switched on (for a controller that knows them). */
+    public LiveRun(WorldMap map, long internalSeed, Set<Fault> faults, ControllerFactory controller) {
         this.map = map;
         this.internalSeed = internalSeed;
         this.faults = Set.copyOf(faults);
         this.state = new SimState(internalSeed);
         this.switchboard = new FaultSwitchboard(faults, state::tick);
-        this.scene = Scene.start(map, state, switchboard);
+        this.scene = Scene.start(map, state, switchboard, controller);
         this.detector = new AccidentDetector(scene);
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
     }

@@ -3,8 +3,11 @@ package sitcov.judge;
 import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
+import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
+import sitcov.vehicles.BuiltinCar;
 import sitcov.world.WorldMap;
 
 /**
@@ -23,12 +26,18 @@ public final class MapRunner {
 
     /** Judges every fault of {@code faults}, in the list's order, each faulty run as long as {@code length} says. */
     public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length) {
-        RunResult faultFree = Simulator.run(map, internalSeed);
+        return judge(map, internalSeed, faults, length, BuiltinCar.FACTORY);
+    }
+
+    /** As {@link #judge(WorldMap, long, List, FaultyRuns)}, every run driven by the controller {@code controller} makes. */
+    public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length,
+                                  ControllerFactory controller) {
+        RunResult faultFree = Simulator.run(map, internalSeed, Set.of(), RunObserver.NONE, controller).result();
         List<FaultVerdict> verdicts = new ArrayList<>(faults.size());
         for (Fault fault : faults) {
             RunRecord faulty = length == FaultyRuns.UNTIL_VERDICT
-                    ? Simulator.runUntilVerdict(map, internalSeed, EnumSet.of(fault), faultFree)
-                    : Simulator.run(map, internalSeed, EnumSet.of(fault), RunObserver.NONE);
+                    ? Simulator.runUntilVerdict(map, internalSeed, EnumSet.of(fault), faultFree, controller)
+                    : Simulator.run(map, internalSeed, EnumSet.of(fault), RunObserver.NONE, controller);
             verdicts.add(DifferentialOracle.judge(faultFree, faulty, fault));
         }
         return new JudgedMap(faultFree, verdicts);

@@ -1,8 +1,10 @@
 package sitcov.judge;
 
 import java.util.Set;
+import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
+import sitcov.vehicles.BuiltinCar;
 import sitcov.world.WorldMap;
 
 /**
@@ -19,17 +21,24 @@ public final class Simulator {
     }
 
     public static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer) {
-        return run(map, internalSeed, faults, observer, null);
+        return run(map, internalSeed, faults, observer, BuiltinCar.FACTORY);
+    }
+
+    /** A run of the controller {@code controller} makes (the builtin car, or a controller program). */
+    public static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer,
+                                ControllerFactory controller) {
+        return run(map, internalSeed, faults, observer, null, controller);
     }
 
     /** A faulty run stopped once its verdict against {@code faultFree} (same map and seeds) is settled. */
-    static RunRecord runUntilVerdict(WorldMap map, long internalSeed, Set<Fault> faults, RunResult faultFree) {
-        return run(map, internalSeed, faults, RunObserver.NONE, new VerdictWatch(faultFree));
+    static RunRecord runUntilVerdict(WorldMap map, long internalSeed, Set<Fault> faults, RunResult faultFree,
+                                     ControllerFactory controller) {
+        return run(map, internalSeed, faults, RunObserver.NONE, new VerdictWatch(faultFree), controller);
     }
 
     private static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer,
-                                 VerdictWatch watch) {
-        LiveRun run = new LiveRun(map, internalSeed, faults);
+                                 VerdictWatch watch, ControllerFactory controller) {
+        LiveRun run = new LiveRun(map, internalSeed, faults, controller);
         while (run.step()) {
             observer.afterTick(run.tick(), run.scene(), run.detector());
             if (watch != null && watch.settled(run.detector())) {

@@ -95,6 +95,9 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         m.put("budget", c.budget().key());
         m.put("candidate_limit", Integer.toString(c.candidateLimit()));
         m.put("faulty_runs", c.faultyRuns().key());
+        if (!c.controller().equals(ExperimentConfig.BUILTIN)) {
+            m.put("controller", c.controller());
+        }
         m.put("grid", ResultsFolder.GRID);
         m.put("grid_sha256", sha256(c.grid().format()));
         m.putAll(c.analysis().properties());
@@ -163,7 +166,8 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
                     // folders written before faulty runs could stop at their verdict ran them to the end
                     FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.TO_END.key())),
                     // folders written before the analysis was declared are judged by its defaults
-                    AnalysisPlan.read(p::getProperty, drivers));
+                    AnalysisPlan.read(p::getProperty, drivers),
+                    p.getProperty("controller", ExperimentConfig.BUILTIN));
             Shard shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
             return new Manifest(config, required(p, "sitcov_version"), shard,
                     Boolean.parseBoolean(required(p, COMPLETE)), Boolean.parseBoolean(p.getProperty("resumed", "false")),

@@ -6,6 +6,7 @@ import java.util.random.RandomGenerator;
 import sitcov.control.Command;
 import sitcov.control.Controller;
 import sitcov.control.ControllerFactory;
+import sitcov.control.ControllerSource;
 import sitcov.control.Observation;
 import sitcov.control.SpeedChange;
 import sitcov.control.Vehicle;
@@ -81,10 +82,22 @@ public final class BuiltinCar implements Controller, Vehicle {
         this.targetSeeker = new TargetSeeker(this, faults);
     }
 
-    /** The builtin car with the faults of {@code faults} switched on, for every run it is asked for. */
-    public static ControllerFactory variant(FaultSwitchboard faults) {
-        return run -> new BuiltinCar(run.map(), faults, run.streams().stream(DECISIONS_STREAM));
-    }
+    /** The builtin car of each run, with the run's faults switched on. */
+    public static final ControllerFactory FACTORY =
+            run -> new BuiltinCar(run.map(), run.faults(), run.streams().stream(DECISIONS_STREAM));
+
+    /** The builtin car for every worker thread (it holds no process or other resource). */
+    public static final ControllerSource SOURCE = new ControllerSource() {
+        @Override
+        public ControllerFactory forThisThread() {
+            return FACTORY;
+        }
+
+        @Override
+        public String spec() {
+            return "builtin";
+        }
+    };
 
     @Override
     public void step(Observation observation, Command out) {

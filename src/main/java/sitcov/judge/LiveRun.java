@@ -9,6 +9,7 @@ import sitcov.oracle.AccidentDetector;
 import sitcov.oracle.RunResult;
 import sitcov.vehicles.BuiltinCar;
 import sitcov.vehicles.Scene;
+import sitcov.vehicles.Telemetry;
 import sitcov.world.WorldMap;
 
 /**
@@ -38,7 +39,7 @@ public final class LiveRun {
         this.state = new SimState(internalSeed);
         this.switchboard = new FaultSwitchboard(faults, state::tick);
         this.scene = Scene.start(map, state, switchboard, controller);
-        this.detector = new AccidentDetector(scene);
+        this.detector = new AccidentDetector(scene.telemetry());
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
     }
 
@@ -56,6 +57,12 @@ public final class LiveRun {
         return state.tick();
     }
 
+    /** The run as its watchers see it. */
+    public Telemetry telemetry() {
+        return scene.telemetry();
+    }
+
+    /** The live scene, for the viewer that steps and draws it. */
     public Scene scene() {
         return scene;
     }

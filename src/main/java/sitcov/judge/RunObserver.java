@@ -1,13 +1,13 @@
 package sitcov.judge;
 
 import sitcov.oracle.AccidentDetector;
-import sitcov.vehicles.Scene;
+import sitcov.vehicles.Telemetry;
 
-/** Watches a run tick by tick (a trace writer, a renderer); it must not change the scene. */
+/** Watches a run tick by tick (a trace writer, a renderer) through its telemetry, never the scene itself. */
 @FunctionalInterface
 public interface RunObserver {
-    RunObserver NONE = (tick, scene, detector) -> { };
+    RunObserver NONE = (tick, run, detector) -> { };
 
     /** Called after every tick, once all vehicles moved and the detector looked. */
-    void afterTick(long tick, Scene scene, AccidentDetector detector);
+    void afterTick(long tick, Telemetry run, AccidentDetector detector);
 }

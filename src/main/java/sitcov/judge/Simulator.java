@@ -40,7 +40,7 @@ public final class Simulator {
                                  VerdictWatch watch, ControllerFactory controller) {
         LiveRun run = new LiveRun(map, internalSeed, faults, controller);
         while (run.step()) {
-            observer.afterTick(run.tick(), run.scene(), run.detector());
+            observer.afterTick(run.tick(), run.telemetry(), run.detector());
             if (watch != null && watch.settled(run.detector())) {
                 run.detector().stopAtVerdict(run.state());
             }

@@ -9,10 +9,9 @@ import sitcov.control.ControllerFailure;
 import sitcov.engine.SimState;
 import sitcov.engine.Steppable;
 import sitcov.geom.Box;
-import sitcov.vehicles.AutonomousCar;
+import sitcov.control.Vehicle;
 import sitcov.vehicles.Dynamics;
-import sitcov.vehicles.MovingCar;
-import sitcov.vehicles.Scene;
+import sitcov.vehicles.Telemetry;
 
 /**
  * The accident oracle, stepped every tick after all vehicles moved. Each accident is an event:
@@ -24,7 +23,7 @@ public final class AccidentDetector implements Steppable {
     /** After every vehicle has moved. */
     public static final int ORDERING = 1;
 
-    private final Scene scene;
+    private final Telemetry run;
     private final boolean[] touchingParked;
     private final boolean[] touchingMoving;
     private final List<Accident> accidents = new ArrayList<>();
@@ -35,19 +34,19 @@ public final class AccidentDetector implements Steppable {
     private Outcome outcome;
     private long ticks;
 
-    public AccidentDetector(Scene scene) {
-        this.scene = scene;
-        this.touchingParked = new boolean[scene.parkedBodies().size()];
-        this.touchingMoving = new boolean[scene.movingCars().size()];
-        this.centreLine = new CentreLine(scene.network());
+    public AccidentDetector(Telemetry run) {
+        this.run = run;
+        this.touchingParked = new boolean[run.parkedBodies().size()];
+        this.touchingMoving = new boolean[run.movingCars().size()];
+        this.centreLine = new CentreLine(run.network());
     }
 
     @Override
     public void step(SimState state) {
-        AutonomousCar car = scene.autonomousCar();
+        Vehicle car = run.car();
         long tick = state.tick();
         Box body = car.footprint();
-        List<Box> parked = scene.parkedBodies();
+        List<Box> parked = run.parkedBodies();
         for (int i = 0; i < parked.size(); i++) {
             boolean touching = body.overlaps(parked.get(i));
             if (touching && !touchingParked[i]) {
@@ -55,22 +54,22 @@ public final class AccidentDetector implements Steppable {
             }
             touchingParked[i] = touching;
         }
-        boolean off = !scene.network().isOnRoad(body);
+        boolean off = !run.network().isOnRoad(body);
         if (off && !offRoad) {
             record(tick, AccidentType.LEAVEROAD, car, -1);
         }
         offRoad = off;
-        boolean over = centreLine.isOver(car, body) && !car.selfReport().overtaking() && !car.selfReport().crossingJunction();
+        boolean over = centreLine.isOver(car, run.selfReport(), body) && !run.selfReport().overtaking() && !run.selfReport().crossingJunction();
         if (over && !overCentreLine) {
             record(tick, AccidentType.CROSSCENTRELINE, car, -1);
         }
         overCentreLine = over;
-        List<MovingCar> moving = scene.movingCars();
+        List<? extends Vehicle> moving = run.movingCars();
         for (int i = 0; i < moving.size(); i++) {
-            MovingCar other = moving.get(i);
+            Vehicle other = moving.get(i);
             boolean touching = other.isActive() && body.overlaps(other.footprint());
             if (touching && !touchingMoving[i]) {
-                Blame blame = BlameRules.judge(car, other, centreLine, over);
+                Blame blame = BlameRules.judge(car, run.selfReport(), other, centreLine, over);
                 if (blame.isAccident()) {
                     record(tick, AccidentType.CLASHWITHOTHERCAR, car, other.id());
                 } else {
@@ -79,10 +78,10 @@ public final class AccidentDetector implements Steppable {
             }
             touchingMoving[i] = touching;
         }
-        if (car.failure() != null) {
-            finish(state, car.failure().kind() == ControllerFailure.Kind.TIMEOUT
+        if (run.failure() != null) {
+            finish(state, run.failure().kind() == ControllerFailure.Kind.TIMEOUT
                     ? Outcome.CONTROLLER_TIMEOUT : Outcome.CONTROLLER_ERROR, tick);
-        } else if (car.hasReachedTarget()) {
+        } else if (run.reachedTarget()) {
             finish(state, Outcome.TARGET_REACHED, tick);
         } else if (tick + 1 >= Dynamics.TIMEOUT_TICKS) {
             record(tick, AccidentType.TIMEOUT, car, -1);
@@ -90,7 +89,7 @@ public final class AccidentDetector implements Steppable {
         }
     }
 
-    private void record(long tick, AccidentType type, AutonomousCar car, int other) {
+    private void record(long tick, AccidentType type, Vehicle car, int other) {
         accidents.add(new Accident(tick, type, car.x(), car.y(), other));
     }
 

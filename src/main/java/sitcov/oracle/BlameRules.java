@@ -1,7 +1,7 @@
 package sitcov.oracle;
 
 import sitcov.geom.Bearing;
-import sitcov.vehicles.AutonomousCar;
+import sitcov.control.SelfReport;
 import sitcov.control.Vehicle;
 
 /** Decides, by the named {@link Blame} rules, whether a contact with a moving car is the car's fault. */
@@ -9,7 +9,7 @@ final class BlameRules {
     private BlameRules() {
     }
 
-    static Blame judge(AutonomousCar car, Vehicle other, CentreLine centreLine, boolean carOverCentreLine) {
+    static Blame judge(Vehicle car, SelfReport said, Vehicle other, CentreLine centreLine, boolean carOverCentreLine) {
         if (car.speed() == 0) {
             return Blame.EXCUSED_STANDING_STILL;
         }
@@ -21,7 +21,7 @@ final class BlameRules {
         if (centreLine.touches(other.footprint())) {
             return Blame.EXCUSED_OTHER_ON_CENTRE_LINE;
         }
-        if (headingDifference > 135 && !carOverCentreLine && !car.selfReport().overtaking()) {
+        if (headingDifference > 135 && !carOverCentreLine && !said.overtaking()) {
             return Blame.EXCUSED_OTHER_IN_WRONG_LANE;
         }
         return Blame.AT_FAULT;

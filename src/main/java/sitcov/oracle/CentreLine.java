@@ -8,7 +8,8 @@ import sitcov.world.Marking;
 import sitcov.world.MarkingKind;
 import sitcov.world.Road;
 import sitcov.world.RoadNetwork;
-import sitcov.vehicles.AutonomousCar;
+import sitcov.control.SelfReport;
+import sitcov.control.Vehicle;
 
 /** Where the other lane begins: whether a footprint reaches over a road's centre line, outside junctions. */
 final class CentreLine {
@@ -21,8 +22,8 @@ final class CentreLine {
     }
 
     /** Whether any corner of the car's footprint lies in the other lane of the road it drives along. */
-    boolean isOver(AutonomousCar car, Box body) {
-        Compass lane = car.selfReport().lane() == null ? Compass.nearest(car.heading()) : car.selfReport().lane();
+    boolean isOver(Vehicle car, SelfReport said, Box body) {
+        Compass lane = said.lane() == null ? Compass.nearest(car.heading()) : said.lane();
         double[] corners = body.corners();
         for (int i = 0; i < 4; i++) {
             double x = corners[2 * i];

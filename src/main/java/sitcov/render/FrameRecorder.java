@@ -5,8 +5,7 @@ import java.util.List;
 import sitcov.geom.Box;
 import sitcov.judge.RunObserver;
 import sitcov.oracle.AccidentDetector;
-import sitcov.vehicles.AutonomousCar;
-import sitcov.vehicles.Scene;
+import sitcov.vehicles.Telemetry;
 import sitcov.control.Vehicle;
 
 /** Every vehicle's footprint every {@code every} ticks (and at the last tick), for an animation. */
@@ -27,13 +26,11 @@ public final class FrameRecorder implements RunObserver {
     }
 
     @Override
-    public void afterTick(long tick, Scene scene, AccidentDetector detector) {
+    public void afterTick(long tick, Telemetry run, AccidentDetector detector) {
         List<Box> traffic = new ArrayList<>();
-        Box car = null;
-        for (Vehicle v : scene.vehicles()) {
-            if (v.id() == AutonomousCar.ID) {
-                car = v.footprint();
-            } else if (v.isActive()) {
+        Box car = run.car().footprint();
+        for (Vehicle v : run.movingCars()) {
+            if (v.isActive()) {
                 traffic.add(v.footprint());
             }
         }

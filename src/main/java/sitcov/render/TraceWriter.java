@@ -9,8 +9,8 @@ import java.util.Locale;
 import sitcov.judge.RunObserver;
 import sitcov.oracle.AccidentDetector;
 import sitcov.results.OutputFile;
-import sitcov.vehicles.AutonomousCar;
-import sitcov.vehicles.Scene;
+import sitcov.control.Vehicle;
+import sitcov.vehicles.Telemetry;
 
 /**
  * Writes a run tick by tick as CSV (UTF-8, '\n' line ends, a header row): both seeds, the tick,
@@ -46,22 +46,22 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
     }
 
     @Override
-    public void afterTick(long tick, Scene scene, AccidentDetector detector) {
+    public void afterTick(long tick, Telemetry run, AccidentDetector detector) {
         if (closed) {
             throw new IllegalStateException("the trace " + target + " is already closed");
         }
-        AutonomousCar car = scene.autonomousCar();
+        Vehicle car = run.car();
         row.setLength(0);
         row.append(seeds).append(tick).append(',')
                 .append(number(car.x())).append(',')
                 .append(number(car.y())).append(',')
                 .append(number(car.heading())).append(',')
                 .append(number(car.speed())).append(',')
-                .append(car.selfReport().lane()).append(',')
-                .append(car.selfReport().stage()).append(',')
-                .append(car.selfReport().crossingJunction()).append(',')
-                .append(car.selfReport().waitingAtJunction()).append(',')
-                .append(text(car.selfReport().steeredBy())).append(',')
+                .append(run.selfReport().lane()).append(',')
+                .append(run.selfReport().stage()).append(',')
+                .append(run.selfReport().crossingJunction()).append(',')
+                .append(run.selfReport().waitingAtJunction()).append(',')
+                .append(text(run.selfReport().steeredBy())).append(',')
                 .append(detector.accidents().size()).append('\n');
         try {
             out.append(row);

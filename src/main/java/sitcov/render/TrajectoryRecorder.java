@@ -5,9 +5,9 @@ import java.util.List;
 import sitcov.judge.RunObserver;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentDetector;
-import sitcov.vehicles.AutonomousCar;
+import sitcov.control.Vehicle;
 import sitcov.vehicles.OvertakingStage;
-import sitcov.vehicles.Scene;
+import sitcov.vehicles.Telemetry;
 
 /**
  * Records the autonomous car's path through one run, one entry per tick: where its front centre
@@ -31,18 +31,18 @@ public final class TrajectoryRecorder implements RunObserver {
     private List<Accident> accidents = List.of();
 
     @Override
-    public void afterTick(long tick, Scene scene, AccidentDetector detector) {
+    public void afterTick(long tick, Telemetry run, AccidentDetector detector) {
         if (ticks == xs.length) {
             grow();
         }
-        AutonomousCar car = scene.autonomousCar();
+        Vehicle car = run.car();
         tickNumbers[ticks] = tick;
         xs[ticks] = car.x();
         ys[ticks] = car.y();
         headings[ticks] = car.heading();
         speeds[ticks] = car.speed();
-        stages[ticks] = (byte) stageOf(car.selfReport().stage()).ordinal();
-        crossings[ticks] = car.selfReport().crossingJunction();
+        stages[ticks] = (byte) stageOf(run.selfReport().stage()).ordinal();
+        crossings[ticks] = run.selfReport().crossingJunction();
         ticks++;
         accidents = detector.accidents(); // a read-only view of the detector's list
     }

@@ -40,6 +40,7 @@ public final class Scene {
     private final List<MovingCar> movingCarsView = Collections.unmodifiableList(movingCars);
     private final List<Vehicle> vehiclesView = Collections.unmodifiableList(vehicles);
     private AutonomousCar autonomousCar;
+    private final Telemetry telemetry = new SceneTelemetry(this);
 
     Scene(WorldMap map, SimState state) {
         this.map = map;
@@ -115,6 +116,11 @@ public final class Scene {
 
     public SimState state() {
         return state;
+    }
+
+    /** The run's telemetry: what watchers of the run receive. */
+    public Telemetry telemetry() {
+        return telemetry;
     }
 
     public AutonomousCar autonomousCar() {

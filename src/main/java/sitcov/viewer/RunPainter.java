@@ -19,9 +19,9 @@ import sitcov.oracle.Accident;
 import sitcov.render.MapRenderer;
 import sitcov.render.MapShapes;
 import sitcov.render.OutcomeText;
+import sitcov.control.Controller;
 import sitcov.control.SelfReport;
 import sitcov.geom.Compass;
-import sitcov.vehicles.AutonomousCar;
 import sitcov.vehicles.BuiltinCar;
 import sitcov.vehicles.OvertakingStage;
 import sitcov.control.Vehicle;
@@ -87,10 +87,10 @@ public final class RunPainter {
         AffineTransform saved = g.getTransform();
         g.translate(0, HEADER);
         g.scale(scale, scale);
-        AutonomousCar car = run.scene().autonomousCar();
-        sensors(g, car);
-        for (Vehicle v : run.scene().vehicles()) {
-            if (v.isActive() && v.id() != AutonomousCar.ID) {
+        Vehicle car = run.telemetry().car();
+        sensors(g, car, run.scene().autonomousCar().controller());
+        for (Vehicle v : run.telemetry().movingCars()) {
+            if (v.isActive()) {
                 body(g, v, MOVING);
             }
         }
@@ -133,8 +133,8 @@ public final class RunPainter {
         if (run.detector().outcome() != null) {
             return "Run over: " + OutcomeText.of(run.detector().outcome(), run.detector().ticks(), run.detector().accidents());
         }
-        AutonomousCar car = run.scene().autonomousCar();
-        SelfReport said = car.selfReport();
+        Vehicle car = run.telemetry().car();
+        SelfReport said = run.telemetry().selfReport();
         String stage = said.stage() == null ? OvertakingStage.NOT_OVERTAKING.name() : said.stage();
         return String.format(Locale.ROOT, "%s · %.1f km/h · lane %s · %s%s%s · steered by %s · speed set by %s",
                 run.tick() < 0 ? "not started (press Play or Step)" : "tick " + run.tick(), car.speed() * 18,
@@ -149,8 +149,9 @@ public final class RunPainter {
      * The camera's reach (shaded fan) and the samples where its rays met a marking this tick (yellow
      * dots); the LIDAR's reach (outlined half disc) and the rays of its last sweep that hit something.
      */
-    private void sensors(Graphics2D g, AutonomousCar body) {
-        if (!(body.controller() instanceof BuiltinCar car)) {
+    /** The builtin car's sensors as it used them (another controller's are its own affair). */
+    private void sensors(Graphics2D g, Vehicle body, Controller controller) {
+        if (!(controller instanceof BuiltinCar car)) {
             return;
         }
         g.setColor(CAMERA);

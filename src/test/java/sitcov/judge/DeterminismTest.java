@@ -35,7 +35,8 @@ class DeterminismTest {
     static Traced run(WorldMap map, long internalSeed) {
         List<Pose> trace = new ArrayList<>();
         RunResult result = Simulator.run(map, internalSeed, Set.of(), (tick, scene, detector) -> {
-            for (Vehicle v : scene.vehicles()) {
+            for (Vehicle v : java.util.stream.Stream.concat(java.util.stream.Stream.of(scene.car()),
+                    scene.movingCars().stream()).toList()) {
                 if (v.isActive()) {
                     trace.add(new Pose(tick, v.id(), v.x(), v.y(), v.heading()));
                 }

@@ -25,7 +25,7 @@ class FaultIsolationTest {
     private static List<String> trajectory(WorldMap map, long internalSeed, Set<Fault> faults, List<Activation> out) {
         List<String> states = new ArrayList<>();
         RunRecord record = Simulator.run(map, internalSeed, faults, (tick, scene, detector) -> {
-            AutonomousCar car = scene.autonomousCar();
+            var car = scene.car();
             states.add(tick + ":" + car.x() + "," + car.y() + "," + car.heading() + "," + car.speed()
                     + "," + detector.accidents().size());
         });

@@ -149,7 +149,7 @@ class AccidentDetectorTest {
 
         RunResult result = Simulator.run(Situations.withoutTraffic(layout), 1, Set.of(),
                 (tick, scene, detector) -> {
-                    boolean off = !scene.network().isOnRoad(scene.autonomousCar().footprint());
+                    boolean off = !scene.network().isOnRoad(scene.car().footprint());
                     if (off && !wasOff[0]) {
                         entered.add(tick);
                     }
@@ -193,13 +193,13 @@ class AccidentDetectorTest {
         CentreLine centreLine = new CentreLine(scene.network());
 
         // front centre y = 48.5: corners at y = 47.5 and 49.5, both in the east-bound half
-        assertFalse(centreLine.isOver(car, Box.behind(60, 48.5, 90, 2, 2)));
+        assertFalse(centreLine.isOver(car, car.selfReport(), Box.behind(60, 48.5, 90, 2, 2)));
         // front centre y = 49.2: corners at y = 50.2, 0.2 m into the west-bound half
-        assertTrue(centreLine.isOver(car, Box.behind(60, 49.2, 90, 2, 2)));
+        assertTrue(centreLine.isOver(car, car.selfReport(), Box.behind(60, 49.2, 90, 2, 2)));
         // corners exactly on the centre (y = 50) are not over it
-        assertFalse(centreLine.isOver(car, Box.behind(60, 49, 90, 2, 2)));
+        assertFalse(centreLine.isOver(car, car.selfReport(), Box.behind(60, 49, 90, 2, 2)));
         // straddling the centre inside the east dead-end square x ∈ [174, 180]: corners at x 176, 178
-        assertFalse(centreLine.isOver(car, Box.behind(178, 50, 90, 2, 2)));
+        assertFalse(centreLine.isOver(car, car.selfReport(), Box.behind(178, 50, 90, 2, 2)));
     }
 
     @Test
@@ -235,7 +235,7 @@ class AccidentDetectorTest {
         // head-on in its lane while it is over the centre line: every other rule would blame it
         Vehicle oncoming = new Other(car.x() + 4, 48.5, 270, 1);
 
-        assertEquals(Blame.EXCUSED_STANDING_STILL, BlameRules.judge(car, oncoming, centreLine, true));
+        assertEquals(Blame.EXCUSED_STANDING_STILL, BlameRules.judge(car, car.selfReport(), oncoming, centreLine, true));
     }
 
     @Test
@@ -245,10 +245,10 @@ class AccidentDetectorTest {
         CentreLine centreLine = new CentreLine(scene.network());
         // 1 m behind its front (inside its body), same way, faster
         Vehicle faster = new Other(car.x() - 1, 48.5, 90, car.speed() + 0.5);
-        assertEquals(Blame.EXCUSED_HIT_FROM_BEHIND, BlameRules.judge(car, faster, centreLine, false));
+        assertEquals(Blame.EXCUSED_HIT_FROM_BEHIND, BlameRules.judge(car, car.selfReport(), faster, centreLine, false));
         // the excuse comes before the centre-line one: faster and on the centre line (y ∈ [49, 51])
         Vehicle fasterOnLine = new Other(car.x() - 1, 50, 90, car.speed() + 0.5);
-        assertEquals(Blame.EXCUSED_HIT_FROM_BEHIND, BlameRules.judge(car, fasterOnLine, centreLine, false));
+        assertEquals(Blame.EXCUSED_HIT_FROM_BEHIND, BlameRules.judge(car, car.selfReport(), fasterOnLine, centreLine, false));
     }
 
     @Test
@@ -260,8 +260,8 @@ class AccidentDetectorTest {
         Vehicle slowerBehind = new Other(car.x() - 1, 48.5, 90, 0);
         Vehicle slowerAhead = new Other(car.x() + 4.5, 48.5, 90, 0);
 
-        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, slowerBehind, centreLine, false));
-        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, slowerAhead, centreLine, false));
+        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, car.selfReport(), slowerBehind, centreLine, false));
+        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, car.selfReport(), slowerAhead, centreLine, false));
     }
 
     @Test
@@ -272,7 +272,7 @@ class AccidentDetectorTest {
         // oncoming, centred on the centre line: y ∈ [49, 51]
         Vehicle straddling = new Other(car.x() + 5, 50, 270, 1);
 
-        assertEquals(Blame.EXCUSED_OTHER_ON_CENTRE_LINE, BlameRules.judge(car, straddling, centreLine, false));
+        assertEquals(Blame.EXCUSED_OTHER_ON_CENTRE_LINE, BlameRules.judge(car, car.selfReport(), straddling, centreLine, false));
     }
 
     @Test
@@ -283,8 +283,8 @@ class AccidentDetectorTest {
         // head-on in the east-bound lane, y ∈ [47.5, 49.5]: not on the centre strip
         Vehicle wrongWay = new Other(car.x() + 4, 48.5, 270, 1);
 
-        assertEquals(Blame.EXCUSED_OTHER_IN_WRONG_LANE, BlameRules.judge(car, wrongWay, centreLine, false));
-        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, wrongWay, centreLine, true));
+        assertEquals(Blame.EXCUSED_OTHER_IN_WRONG_LANE, BlameRules.judge(car, car.selfReport(), wrongWay, centreLine, false));
+        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, car.selfReport(), wrongWay, centreLine, true));
     }
 
     // ---- results ----
@@ -375,7 +375,7 @@ class AccidentDetectorTest {
     private static List<Accident> firstTicks(Layout layout, int ticks) {
         SimState state = new SimState(1);
         Scene scene = Scene.start(Situations.withoutTraffic(layout), state, FaultSwitchboard.none());
-        AccidentDetector detector = new AccidentDetector(scene);
+        AccidentDetector detector = new AccidentDetector(scene.telemetry());
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
         for (int t = 0; t < ticks; t++) {
             assertTrue(state.step());

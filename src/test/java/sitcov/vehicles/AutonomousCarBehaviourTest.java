@@ -46,7 +46,7 @@ class AutonomousCarBehaviourTest {
         List<double[]> poses = new ArrayList<>();
 
         RunRecord run = Simulator.run(Situations.withoutTraffic(layout), 1, Set.of(),
-                (tick, scene, detector) -> poses.add(new double[] {scene.autonomousCar().x(), scene.autonomousCar().heading()}));
+                (tick, scene, detector) -> poses.add(new double[] {scene.car().x(), scene.car().heading()}));
 
         assertEquals(Outcome.TARGET_REACHED, run.result().outcome());
         assertEquals(List.of(), run.result().accidents());
@@ -64,8 +64,8 @@ class AutonomousCarBehaviourTest {
         List<double[]> whenStarted = new ArrayList<>();
 
         RunRecord run = Simulator.run(map, 1, Set.of(), (tick, scene, detector) -> {
-            AutonomousCar car = scene.autonomousCar();
-            OvertakingStage stage = builtin(car).overtakingStage();
+            var car = scene.car();
+            OvertakingStage stage = OvertakingStage.valueOf(scene.selfReport().stage());
             if (stages.isEmpty() || stages.get(stages.size() - 1) != stage) {
                 stages.add(stage);
                 if (stage == OvertakingStage.START) {
@@ -94,7 +94,7 @@ class AutonomousCarBehaviourTest {
         Scene scene = Scene.start(map, state, FaultSwitchboard.none());
         Junction tee = map.layout().junctions().get(0);
         scene.occupancy().request(tee.id(), 99, 0, 0);
-        AccidentDetector detector = new AccidentDetector(scene);
+        AccidentDetector detector = new AccidentDetector(scene.telemetry());
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
         long firstWait = -1;
         double frontWhileWaiting = 0;
@@ -166,7 +166,7 @@ class AutonomousCarBehaviourTest {
                     new StartPose(new Vec2(40, 48.5), Compass.EAST));
             boolean[] overtook = {false};
             RunRecord run = Simulator.run(Situations.withoutTraffic(layout), 1, Set.of(),
-                    (tick, scene, detector) -> overtook[0] |= builtin(scene.autonomousCar()).overtakingStage().isPassing());
+                    (tick, scene, detector) -> overtook[0] |= scene.selfReport().overtaking());
             assertTrue(overtook[0], "gap " + gap + ": the car had to pass the parked car");
             assertEquals(Outcome.TARGET_REACHED, run.result().outcome(), "gap " + gap + ": " + run.result());
             assertTrue(run.result().ticks() < 400, "gap " + gap + ": no circling, " + run.result().ticks() + " ticks");

@@ -36,6 +36,7 @@ public final class Main {
                 new MapCommand(),
                 new CoverageCommand(),
                 new FaultsCommand(),
+                new VersionsCommand(),
                 new BenchCommand()));
     }
 

@@ -88,7 +88,7 @@ public final class AutonomousCar implements Vehicle, Steppable {
     }
 
     private void drive() {
-        double wanted = body.speed() + command.speedChange();
+        double wanted = Double.isNaN(command.speed()) ? body.speed() + command.speedChange() : command.speed();
         double speed = Math.max(0, Math.min(Dynamics.MAX_SPEED, Double.isNaN(wanted) ? body.speed() : wanted));
         double turn = command.steering();
         double allowed = Double.isNaN(turn) ? 0 : Math.max(-Dynamics.MAX_TURN, Math.min(Dynamics.MAX_TURN, turn));

@@ -2,13 +2,13 @@ package sitcov.vehicles;
 
 import sitcov.control.Vehicle;
 import java.util.List;
+import java.util.Set;
 import java.util.random.RandomGenerator;
 import sitcov.control.Command;
 import sitcov.control.Controller;
 import sitcov.control.ControllerFactory;
 import sitcov.control.ControllerSource;
 import sitcov.control.Observation;
-import sitcov.control.SpeedChange;
 import sitcov.control.Vehicle;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
@@ -85,6 +85,19 @@ public final class BuiltinCar implements Controller, Vehicle {
     /** The builtin car of each run, with the run's faults switched on. */
     public static final ControllerFactory FACTORY =
             run -> new BuiltinCar(run.map(), run.faults(), run.streams().stream(DECISIONS_STREAM));
+
+    /**
+     * The builtin car with {@code planted} always on, whatever the run switches on: a version of it
+     * with bugs, for comparing versions. What the planted faults do is recorded on a board of its own.
+     */
+    public static ControllerFactory withPlanted(Set<Fault> planted) {
+        Set<Fault> copy = Set.copyOf(planted);
+        return run -> {
+            java.util.EnumSet<Fault> on = java.util.EnumSet.copyOf(copy);
+            on.addAll(run.faults().activeFaults());
+            return new BuiltinCar(run.map(), new FaultSwitchboard(on, run.clock()), run.streams().stream(DECISIONS_STREAM));
+        };
+    }
 
     /** The builtin car for every worker thread (it holds no process or other resource). */
     public static final ControllerSource SOURCE = new ControllerSource() {
@@ -170,14 +183,13 @@ public final class BuiltinCar implements Controller, Vehicle {
 
     /** Works the speed and turn out on its model body and commands them; the world then moves the car. */
     private void drive(Command out) {
-        double speedBefore = body.speed();
         double limit = intent.speedLimit();
         if (intent.isCrawl() && limit >= Dynamics.CRAWL_CEILING) {
             crawl();
         } else {
             body.approachSpeed(limit);
         }
-        out.speedChange(SpeedChange.between(speedBefore, body.speed()));
+        out.speed(body.speed());
         out.steering(Body.turnTowards(body.heading(), intent.bearing(), Dynamics.MAX_TURN));
     }
 

@@ -5,7 +5,8 @@
  * from the differential oracle ({@link sitcov.judge.DifferentialOracle}, settled as it happens by
  * {@link sitcov.judge.VerdictWatch}) or the paper's notion: {@link sitcov.judge.FaultVerdict}, kept by
  * an experiment as {@link sitcov.judge.FaultOutcome} and {@link sitcov.judge.RunSummary}. Fault
- * calibration ({@link sitcov.judge.FaultCalibration}) judges many maps this way. A new way to run or
+ * calibration ({@link sitcov.judge.FaultCalibration}) judges many maps this way. Versions of a
+ * controller are judged against a reference the same way ({@link sitcov.judge.VersionJudge}). A new way to run or
  * judge a map starts here; nothing here knows experiments, drivers or files.
  */
 package sitcov.judge;

@@ -19,7 +19,7 @@ import sitcov.world.StartPose;
  * (recording that it had to), turns, moves, and judges from the geometry whether the car now
  * stands on the Target. The controller's self-report is kept for people, never judged by.
  */
-public final class AutonomousCar implements Vehicle, Steppable {
+public final class AutonomousCar implements Bodied, Steppable {
     public static final int ID = 0;
     /** Its rear axle, which it turns about, is this far behind its front. */
     public static final double REAR_AXLE = 1.5;
@@ -163,35 +163,11 @@ public final class AutonomousCar implements Vehicle, Steppable {
         return ID;
     }
 
-    @Override
-    public double x() {
-        return body.x();
-    }
 
-    @Override
-    public double y() {
-        return body.y();
-    }
 
-    @Override
-    public double heading() {
-        return body.heading();
-    }
 
-    @Override
-    public double headingDx() {
-        return body.headingDx();
-    }
 
-    @Override
-    public double headingDy() {
-        return body.headingDy();
-    }
 
-    @Override
-    public double speed() {
-        return body.speed();
-    }
 
     @Override
     public double length() {
@@ -203,13 +179,14 @@ public final class AutonomousCar implements Vehicle, Steppable {
         return Dimensions.AUTONOMOUS_CAR_WIDTH;
     }
 
-    @Override
-    public Box footprint() {
-        return body.footprint(length(), width());
-    }
 
     @Override
     public boolean isActive() {
         return true;
+    }
+
+    @Override
+    public Body body() {
+        return body;
     }
 }

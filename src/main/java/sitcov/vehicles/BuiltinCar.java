@@ -32,7 +32,7 @@ import sitcov.world.StartPose;
  * each behaviour names. It keeps a model of its own body to plan with, set each tick to the pose
  * the world reports; the world alone moves the car.
  */
-public final class BuiltinCar implements Controller, Vehicle {
+public final class BuiltinCar implements Controller, Bodied {
     /** The stream its own random decisions (the choice among exits already taken) come from. */
     public static final String DECISIONS_STREAM = "autonomous-car.decisions";
     static final double LOOKAHEAD = 6;
@@ -330,45 +330,17 @@ public final class BuiltinCar implements Controller, Vehicle {
         return AutonomousCar.ID;
     }
 
-    @Override
-    public double x() {
-        return body.x();
-    }
 
-    @Override
-    public double y() {
-        return body.y();
-    }
 
-    @Override
-    public double heading() {
-        return body.heading();
-    }
 
-    @Override
-    public double headingDx() {
-        return body.headingDx();
-    }
 
-    @Override
-    public double headingDy() {
-        return body.headingDy();
-    }
 
-    @Override
-    public double speed() {
-        return body.speed();
-    }
 
     @Override
     public double length() {
         return Dimensions.AUTONOMOUS_CAR_LENGTH;
     }
 
-    @Override
-    public Box footprint() {
-        return body.footprint(length(), width());
-    }
 
     @Override
     public double width() {
@@ -378,5 +350,10 @@ public final class BuiltinCar implements Controller, Vehicle {
     @Override
     public boolean isActive() {
         return true;
+    }
+
+    @Override
+    public Body body() {
+        return body;
     }
 }

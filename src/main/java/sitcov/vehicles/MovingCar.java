@@ -21,7 +21,7 @@ import sitcov.world.StartPose;
  * exit at junctions (U-turns allowed), and at a dead end turns back or leaves the map; a car that
  * leaves is replaced by one entering at a random dead end.
  */
-public final class MovingCar implements Vehicle, Steppable {
+public final class MovingCar implements Bodied, Steppable {
     /** The stream exits at junctions are drawn from. */
     public static final String CHOICES_STREAM = "traffic.choices";
     /** The stream replacement cars' dead ends are drawn from. */
@@ -309,45 +309,17 @@ public final class MovingCar implements Vehicle, Steppable {
         return id;
     }
 
-    @Override
-    public double x() {
-        return body.x();
-    }
 
-    @Override
-    public double y() {
-        return body.y();
-    }
 
-    @Override
-    public double heading() {
-        return body.heading();
-    }
 
-    @Override
-    public double headingDx() {
-        return body.headingDx();
-    }
 
-    @Override
-    public double headingDy() {
-        return body.headingDy();
-    }
 
-    @Override
-    public double speed() {
-        return body.speed();
-    }
 
     @Override
     public double length() {
         return Dimensions.CAR_LENGTH;
     }
 
-    @Override
-    public Box footprint() {
-        return body.footprint(length(), width());
-    }
 
     @Override
     public double width() {
@@ -357,5 +329,10 @@ public final class MovingCar implements Vehicle, Steppable {
     @Override
     public boolean isActive() {
         return active;
+    }
+
+    @Override
+    public Body body() {
+        return body;
     }
 }

@@ -117,7 +117,9 @@ final class VersionsCommand implements Command {
         Properties p = new Properties();
         String name = "versions";
         if (options.positional().size() == 1) {
-            Path file = Preset.locate(options.positional().get(0));
+            String named = options.positional().get(0);
+            Path shipped = Path.of("experiments", "controllers", named + ".properties");
+            Path file = Files.isRegularFile(shipped) ? shipped : Preset.locate(named);
             try {
                 p.load(new java.io.StringReader(Files.readString(file, StandardCharsets.UTF_8)));
             } catch (IOException | IllegalArgumentException e) {

@@ -36,7 +36,8 @@ public final class Main {
                 new MapCommand(),
                 new CoverageCommand(),
                 new FaultsCommand(),
-                new BenchCommand()));
+                new BenchCommand(),
+                new ControllerCommand()));
     }
 
     public static void main(String[] args) {

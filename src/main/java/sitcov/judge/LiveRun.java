@@ -3,7 +3,9 @@ package sitcov.judge;
 import java.util.Set;
 import sitcov.engine.SimState;
 import sitcov.faults.Fault;
+import sitcov.control.ControllerFactory;
 import sitcov.faults.FaultSwitchboard;
+import sitcov.vehicles.BuiltinCar;
 import sitcov.oracle.AccidentDetector;
 import sitcov.oracle.RunResult;
 import sitcov.vehicles.Scene;
@@ -24,12 +26,20 @@ public final class LiveRun {
     private boolean ended;
 
     public LiveRun(WorldMap map, long internalSeed, Set<Fault> faults) {
+        this(map, internalSeed, faults, BuiltinCar.factory());
+    }
+
+    /**
+     * A run whose car is driven by the controller {@code controllers} makes; {@code faults} are
+     * switched on in the run's switchboard, which the controller is handed.
+     */
+    public LiveRun(WorldMap map, long internalSeed, Set<Fault> faults, ControllerFactory controllers) {
         this.map = map;
         this.internalSeed = internalSeed;
         this.faults = Set.copyOf(faults);
         this.state = new SimState(internalSeed);
         this.switchboard = new FaultSwitchboard(faults, state::tick);
-        this.scene = Scene.start(map, state, switchboard);
+        this.scene = Scene.start(map, state, switchboard, controllers);
         this.detector = new AccidentDetector(scene);
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
     }

@@ -81,6 +81,11 @@ public final class BuiltinCar implements Controller, Vehicle {
         this.targetSeeker = new TargetSeeker(this, faults);
     }
 
+    /** The builtin car acting on the faults switched on in each run's own switchboard ({@link sitcov.control.RunStart#faults}). */
+    public static ControllerFactory factory() {
+        return run -> new BuiltinCar(run.map(), run.faults(), run.streams().stream(DECISIONS_STREAM));
+    }
+
     /** The builtin car with the faults of {@code faults} switched on, for every run it is asked for. */
     public static ControllerFactory variant(FaultSwitchboard faults) {
         return run -> new BuiltinCar(run.map(), faults, run.streams().stream(DECISIONS_STREAM));

@@ -56,20 +56,26 @@ public final class Scene {
      * faults) and a moving car at each moving-car start, all scheduled every tick from tick 0.
      */
     public static Scene start(WorldMap map, SimState state, FaultSwitchboard faults) {
-        return start(map, state, BuiltinCar.variant(faults));
+        return start(map, state, faults, BuiltinCar.variant(faults));
+    }
+
+    /** {@link #start(WorldMap, SimState, FaultSwitchboard, ControllerFactory)} with every fault off. */
+    public static Scene start(WorldMap map, SimState state, ControllerFactory controllers) {
+        return start(map, state, FaultSwitchboard.none(), controllers);
     }
 
     /**
      * Builds the scene of {@code map} for one run: the car under test at its start, driven by the
      * controller {@code controllers} makes for this run, and a moving car at each moving-car start,
-     * all scheduled every tick from tick 0 (the car under test first).
+     * all scheduled every tick from tick 0 (the car under test first). The controller is handed the
+     * run's switchboard {@code faults}.
      */
-    public static Scene start(WorldMap map, SimState state, ControllerFactory controllers) {
+    public static Scene start(WorldMap map, SimState state, FaultSwitchboard faults, ControllerFactory controllers) {
         Scene scene = new Scene(map, state);
         StartPose start = map.layout().carStart()
                 .orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no start for the car"));
         map.layout().target().orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no Target"));
-        Controller controller = controllers.start(new RunStart(map, state.seed(), state.streams(), state::tick));
+        Controller controller = controllers.start(new RunStart(map, state.seed(), state.streams(), state::tick, faults));
         AutonomousCar car = new AutonomousCar(scene, start, controller);
         scene.setAutonomousCar(car);
         state.schedule().scheduleRepeating(0, VEHICLE_ORDERING, 1, car);

@@ -201,7 +201,7 @@ final class Json {
             }
         }
         String token = text.substring(start, at);
-        if (whole && at - start <= 19) {
+        if (whole && at - start <= 20) {
             try {
                 // seeds are 64-bit: a whole number is kept exact, beyond the 53 bits a double holds
                 return Long.parseLong(token);

@@ -53,8 +53,9 @@ final class Session implements AutoCloseable {
         try {
             line = exchange(timeoutMillis);
         } catch (IOException e) {
+            // a broken pipe: it went away before it read sitcov's hello
             throw startFailure(state.get() == TIMED_OUT ? "no hello within " + timeoutMillis + " ms"
-                    : "the connection broke (" + e.getMessage() + ")");
+                    : "it exited before its hello");
         }
         if (state.get() == TIMED_OUT) {
             throw startFailure("no hello within " + timeoutMillis + " ms");
@@ -114,7 +115,8 @@ final class Session implements AutoCloseable {
             if (state.get() == TIMED_OUT) {
                 throw timeout(now.tick(), timeoutMillis);
             }
-            throw error("at tick " + now.tick() + " the connection broke (" + e.getMessage() + ")");
+            throw error("it exited or closed its input before the observation of tick " + now.tick() + " ("
+                    + e.getMessage() + ")");
         }
         if (state.get() == TIMED_OUT) {
             throw timeout(now.tick(), timeoutMillis);

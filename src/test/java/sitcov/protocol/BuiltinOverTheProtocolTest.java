@@ -41,6 +41,19 @@ class BuiltinOverTheProtocolTest {
     }
 
     @Test
+    void a64BitInternalSeedCrossesThePipeExactly() {
+        // the served car draws its exit choices from the internal seed's streams: a rounded seed would choose otherwise
+        long seed = -8_070_450_532_247_928_833L;
+        try (ProxyFactory pipe = Pipes.serving(BuiltinCar.factory(), Set.of())) {
+            for (long map = 1; map <= 3; map++) {
+                WorldMap world = MapGenerator.generate(map);
+                assertEquals(Simulator.run(world, seed, Set.of(), RunObserver.NONE),
+                        Simulator.run(world, seed, Set.of(), pipe, RunObserver.NONE), "map " + map);
+            }
+        }
+    }
+
+    @Test
     void faultsTheServerSwitchesOnAreReportedAsReachedInTheRun() {
         // the run switches no fault on; the served car has fault 8 (its camera) and reports what it did
         try (ProxyFactory served = Pipes.serving(BuiltinCar.factory(), Set.of(Fault.ofId(8)))) {

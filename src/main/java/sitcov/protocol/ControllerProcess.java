@@ -26,17 +26,20 @@ final class ControllerProcess {
     static final long EXIT_MILLIS = 2000;
 
     // $1 is sitcov's pid, the rest is the controller's command line. The background job gets the
-    // shell's stdin through fd 3 (a non-interactive shell would give it /dev/null); the shell then
-    // closes its own stdin, stdout and stderr, so the program's exit is seen at once as the end of
-    // its stdout.
+    // shell's stdin through fd 3 (a non-interactive shell would give it /dev/null), in a process
+    // group of its own where setsid exists, so that whatever it starts is killed with it; the shell
+    // then closes its own stdin, stdout and stderr, so the program's exit is seen at once as the end
+    // of its stdout.
     private static final String WATCHDOG = String.join("\n",
             "sitcov=$1; shift",
             "exec 3<&0",
-            "\"$@\" <&3 3<&- &",
+            "if command -v setsid >/dev/null 2>&1; then setsid \"$@\" <&3 3<&- & else \"$@\" <&3 3<&- & fi",
             "child=$!",
             "exec 3<&- </dev/null >/dev/null 2>&1",
             "while kill -0 \"$sitcov\" 2>/dev/null; do sleep 1; done",
-            "kill -TERM \"$child\" 2>/dev/null; sleep 1; kill -KILL \"$child\" 2>/dev/null");
+            "kill -TERM -\"$child\" 2>/dev/null || kill -TERM \"$child\" 2>/dev/null",
+            "sleep 1",
+            "kill -KILL -\"$child\" 2>/dev/null || kill -KILL \"$child\" 2>/dev/null");
 
     private final Process process;
     private final Thread drain;

@@ -24,6 +24,8 @@ final class ControllerProcess {
     static final int TAIL_CHARS = 600;
     /** How long a program whose input was closed is given to exit before it is killed. */
     static final long EXIT_MILLIS = 2000;
+    /** How long a dead program's stderr is given to be copied to the end, for the error message. */
+    static final long DRAIN_MILLIS = 5000;
 
     // $1 is sitcov's pid, the rest is the controller's command line. The background job gets the
     // shell's stdin through fd 3 (a non-interactive shell would give it /dev/null), in a process
@@ -108,10 +110,13 @@ final class ControllerProcess {
         }
     }
 
-    /** The last of its stderr, on one line; waits briefly for a dead program's last words. */
+    /**
+     * The last of its stderr, on one line. Called once the program is dead or killed: waits for the
+     * copy to reach the end of its stderr (a loaded machine may take a while to schedule it).
+     */
     private String tail() {
         try {
-            drain.join(1000);
+            drain.join(DRAIN_MILLIS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

@@ -107,7 +107,7 @@ def main():
         kind = msg["type"]
         if kind == "hello":
             answer = {"type": "hello", "protocol": 1, "name": "lane-follower" + ("-buggy" if BUGGY else ""),
-                      "version": "1", "channels": [], "sensors": ["camera"]}
+                      "version": "1", "channels": [], "sensors": ["radar", "obstacles", "camera"]}
         elif kind == "reset":
             target, roads = msg["map"]["target"], msg["map"]["roads"]
             continue

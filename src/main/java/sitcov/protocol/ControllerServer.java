@@ -51,7 +51,8 @@ public final class ControllerServer {
             throw new ProtocolException("sitcov speaks protocol " + hello.integer("protocol") + "; this controller speaks "
                     + Wire.PROTOCOL);
         }
-        Wire.controllerHello(w, name, version, Set.of());
+        // the builtin car works from its own camera and LIDAR on the map, and from the objects its sensors report
+        Wire.controllerHello(w, name, version, Set.of(), Wire.DEFAULT_SENSORS);
         lines.write(w);
         Run run = null;
         Command command = new Command();

@@ -25,8 +25,15 @@ import sitcov.vehicles.Dynamics;
  */
 final class Wire {
     static final int PROTOCOL = 1;
-    /** The sensors a controller may ask for at hello; their hits are sent only to one that asked. */
-    static final List<String> SENSORS = List.of("camera", "lidar");
+    /**
+     * The sensors a controller may ask for at hello, each an observation member sent only to one
+     * that asked: the radar's tracks ("traffic"), the LIDAR's parked cars ("obstacles"), the
+     * camera's marking hits and the LIDAR's raw hits. Leaner lines are read faster: a controller
+     * that needs no sensor asks for none.
+     */
+    static final List<String> SENSORS = List.of("radar", "obstacles", "camera", "lidar");
+    /** What a controller that says nothing of sensors gets: the objects its sensors report, no raw hits. */
+    static final List<String> DEFAULT_SENSORS = List.of("radar", "obstacles");
     /** A tick's length: the top speed of 2.5 m a tick is 45 km/h. */
     static final double TICK_SECONDS = 0.2;
 
@@ -34,7 +41,8 @@ final class Wire {
     }
 
     /** What a controller said at hello: who it is and what it wants in each observation. */
-    record Hello(String name, String version, Set<Channel> channels, boolean camera, boolean lidar) {
+    record Hello(String name, String version, Set<Channel> channels, boolean radar, boolean obstacles, boolean camera,
+                 boolean lidar) {
     }
 
     // ---- sitcov -> controller
@@ -60,22 +68,26 @@ final class Wire {
     static void observation(JsonWriter w, Observation now, Hello wants) {
         w.reset().beginObject().member("type", "observation").member("tick", now.tick())
                 .member("x", now.x()).member("y", now.y()).member("heading", now.heading()).member("speed", now.speed());
-        w.name("traffic").beginArray();
-        List<Vehicle> traffic = now.traffic();
-        for (int i = 0, n = traffic.size(); i < n; i++) {
-            Vehicle v = traffic.get(i);
-            w.beginObject().member("id", v.id()).member("x", v.x()).member("y", v.y()).member("heading", v.heading())
-                    .member("speed", v.speed()).member("length", v.length()).member("width", v.width()).endObject();
+        if (wants.radar()) {
+            w.name("traffic").beginArray();
+            List<Vehicle> traffic = now.traffic();
+            for (int i = 0, n = traffic.size(); i < n; i++) {
+                Vehicle v = traffic.get(i);
+                w.beginObject().member("id", v.id()).member("x", v.x()).member("y", v.y()).member("heading", v.heading())
+                        .member("speed", v.speed()).member("length", v.length()).member("width", v.width()).endObject();
+            }
+            w.endArray();
         }
-        w.endArray();
-        w.name("obstacles").beginArray();
-        List<Box> obstacles = now.obstacles();
-        for (int i = 0, n = obstacles.size(); i < n; i++) {
-            Box b = obstacles.get(i);
-            w.beginObject().member("x", b.centreX()).member("y", b.centreY()).member("bearing", b.bearing())
-                    .member("length", b.length()).member("width", b.width()).endObject();
+        if (wants.obstacles()) {
+            w.name("obstacles").beginArray();
+            List<Box> obstacles = now.obstacles();
+            for (int i = 0, n = obstacles.size(); i < n; i++) {
+                Box b = obstacles.get(i);
+                w.beginObject().member("x", b.centreX()).member("y", b.centreY()).member("bearing", b.bearing())
+                        .member("length", b.length()).member("width", b.width()).endObject();
+            }
+            w.endArray();
         }
-        w.endArray();
         w.name("junctions").beginArray();
         RightOfWay signals = now.rightOfWay();
         for (int j = 0, n = now.roads().junctions().size(); j < n; j++) {
@@ -131,20 +143,17 @@ final class Wire {
             }
             channels.add(c);
         }
-        boolean camera = false;
-        boolean lidar = false;
-        for (Object sensor : m.optionalList("sensors")) {
-            if ("camera".equals(sensor)) {
-                camera = true;
-            } else if ("lidar".equals(sensor)) {
-                lidar = true;
-            } else {
-                throw new ProtocolException("it asks for the sensor " + sensor + "; the sensors are camera, lidar");
+        List<Object> sensors = m.has("sensors") ? m.list("sensors") : List.copyOf(DEFAULT_SENSORS);
+        for (Object sensor : sensors) {
+            if (!SENSORS.contains(sensor)) {
+                throw new ProtocolException("it asks for the sensor " + sensor + "; the sensors are "
+                        + String.join(", ", SENSORS));
             }
         }
         String name = m.has("name") ? m.text("name") : "unnamed";
         String version = m.has("version") ? m.text("version") : "";
-        return new Hello(name, version, channels, camera, lidar);
+        return new Hello(name, version, channels, sensors.contains("radar"), sensors.contains("obstacles"),
+                sensors.contains("camera"), sensors.contains("lidar"));
     }
 
     private static List<String> channelNames() {
@@ -230,12 +239,16 @@ final class Wire {
 
     // ---- controller side: what a controller writes
 
-    static void controllerHello(JsonWriter w, String name, String version, Set<Channel> channels) {
+    static void controllerHello(JsonWriter w, String name, String version, Set<Channel> channels, List<String> sensors) {
         w.reset().beginObject().member("type", "hello").member("protocol", PROTOCOL).member("name", name)
                 .member("version", version);
         w.name("channels").beginArray();
         for (Channel c : channels) {
             w.value(c.wireName());
+        }
+        w.endArray().name("sensors").beginArray();
+        for (String sensor : sensors) {
+            w.value(sensor);
         }
         w.endArray().endObject();
     }

@@ -61,14 +61,14 @@ final class WireObservation implements Observation, RightOfWay {
         heading = m.number("heading");
         speed = m.number("speed");
         traffic.clear();
-        List<Object> tracks = m.list("traffic");
+        List<Object> tracks = m.optionalList("traffic");
         for (int i = 0; i < tracks.size(); i++) {
             Message t = m.item(tracks, i, "traffic");
             traffic.add(new Track((int) t.integer("id"), t.number("x"), t.number("y"), t.number("heading"),
                     t.number("speed"), positive(t, "length"), positive(t, "width")));
         }
         obstacles.clear();
-        List<Object> boxes = m.list("obstacles");
+        List<Object> boxes = m.optionalList("obstacles");
         for (int i = 0; i < boxes.size(); i++) {
             Message b = m.item(boxes, i, "obstacles");
             obstacles.add(Box.centred(b.number("x"), b.number("y"), b.number("bearing"), positive(b, "length"),

@@ -134,7 +134,10 @@ final class ControllerProcess {
      * kills it (if it is still there) and the watchdog shell, which would otherwise go on watching.
      */
     private void reap() {
-        List<ProcessHandle> programs = process.descendants().toList();
+        // the watchdog's own `sleep 1` is no program to wait for
+        List<ProcessHandle> programs = process.descendants()
+                .filter(p -> !p.info().command().map(c -> c.endsWith("/sleep") || c.equals("sleep")).orElse(false))
+                .toList();
         long until = System.nanoTime() + EXIT_MILLIS * 1_000_000;
         try {
             for (ProcessHandle p : programs) {

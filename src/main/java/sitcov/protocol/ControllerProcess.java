@@ -86,10 +86,14 @@ final class ControllerProcess {
         return "`" + String.join(" ", command) + "`";
     }
 
-    /** Kills the program, everything it started, and the watchdog shell. */
+    /**
+     * Kills the program, everything it started, and the watchdog shell, by signal only:
+     * {@link Process#destroyForcibly} would also close the streams, and the stderr not yet copied
+     * would be lost to the error message (the JDK closes them itself once the shell has exited).
+     */
     private void kill() {
         process.descendants().forEach(ProcessHandle::destroyForcibly);
-        process.destroyForcibly();
+        process.toHandle().destroyForcibly();
     }
 
     private void copy(InputStream err, OutputStream log) {

@@ -40,7 +40,7 @@ final class BenchCommand implements Command {
     private static final long WARM_UP_SEED = 1_000_000L;
     static final int DEFAULT_ROUNDS = 7;
     static final int MAX_ROUNDS = 1000;
-    static final int DEFAULT_PROTOCOL_MAPS = 6;
+    static final int DEFAULT_PROTOCOL_MAPS = 12;
     /** Runs over the protocol before the timing: fewer leave the JIT compiling during it. */
     private static final int PROTOCOL_WARM_UP_RUNS = 3;
     /**
@@ -205,13 +205,15 @@ final class BenchCommand implements Command {
             return ExitCode.FAILURE;
         }
         try {
-            double lean = protocolTicksPerSecond(List.of("python3", script.toString()), maps, err);
-            double radar = protocolTicksPerSecond(List.of("python3", script.toString(), "--radar"), maps, err);
+            ProtocolTiming lean = protocolTicksPerSecond(List.of("python3", script.toString()), maps, err);
+            ProtocolTiming radar = protocolTicksPerSecond(List.of("python3", script.toString(), "--radar"), maps, err);
             out.printf(Locale.ROOT, "sitcov bench --protocol: one worker, a trivial Python controller (one fixed command)%n%n");
             out.printf(Locale.ROOT, "  %-44s %12s   %s%n", "measure", "figure", "target");
-            protocolLine(out, "protocol ticks per second, no sensors", lean,
-                    ">= 10000 on one core " + verdict(lean >= 10_000));
-            protocolLine(out, "protocol ticks per second, radar+obstacles", radar, "the builtin car's sensors");
+            protocolLine(out, "protocol ticks per second, no sensors", lean.perSecond(),
+                    ">= 10000 on one core " + verdict(lean.perSecond() >= 10_000));
+            cpuLine(out, "  CPU a tick, sitcov + controller", lean.cpuMicrosPerTick());
+            protocolLine(out, "protocol ticks per second, radar+obstacles", radar.perSecond(), "the builtin car's sensors");
+            cpuLine(out, "  CPU a tick, sitcov + controller", radar.cpuMicrosPerTick());
             out.println();
             out.printf(Locale.ROOT, "Runs: maps 1..%d each, the car standing at its start (5000 ticks a run) while the traffic"
                     + " moves round it. Both processes on one core: taskset -c 0 sitcov bench --protocol%n", maps);
@@ -225,12 +227,18 @@ final class BenchCommand implements Command {
         }
     }
 
+    private static void cpuLine(PrintStream out, String label, double micros) {
+        out.println(String.format(Locale.ROOT, "  %-44s %9.1f µs   one core to themselves: %.0f ticks a second", label,
+                micros, 1e6 / micros));
+    }
+
     private static void protocolLine(PrintStream out, String label, double perSecond, String target) {
         out.println(String.format(Locale.ROOT, "  %-44s %12.0f   %s  (%.1f µs a tick)", label, perSecond, target,
                 1e6 / perSecond));
     }
 
-    private static double protocolTicksPerSecond(List<String> command, int maps, PrintStream err) throws UsageException {
+    private static ProtocolTiming protocolTicksPerSecond(List<String> command, int maps, PrintStream err)
+            throws UsageException {
         try (ExecControllers controllers = new ExecControllers(command, Version.current())) {
             try {
                 controllers.check(null);
@@ -245,13 +253,33 @@ final class BenchCommand implements Command {
                 sink += Simulator.run(map, map.seed(), Set.of(), worker, RunObserver.NONE).result().ticks();
             }
             long ticks = 0;
+            long cpuBefore = cpuNanos();
             long start = System.nanoTime();
             for (long seed = 1; seed <= maps; seed++) {
                 ticks += Simulator.run(MapGenerator.generate(seed), seed, Set.of(), worker, RunObserver.NONE).result().ticks();
             }
+            long nanos = System.nanoTime() - start;
+            long cpu = cpuNanos() - cpuBefore;
             sink += ticks;
-            return ticks / ((System.nanoTime() - start) / 1e9);
+            return new ProtocolTiming(ticks / (nanos / 1e9), cpu / 1e3 / ticks);
         }
+    }
+
+    /**
+     * Round trips a second, and the CPU time a tick took in sitcov and in the controller together:
+     * on a machine shared with other work the wall clock measures the others too, the CPU time much
+     * less so, and 10^6 / (µs a tick) is what one core to themselves would allow.
+     */
+    private record ProtocolTiming(double perSecond, double cpuMicrosPerTick) {
+    }
+
+    /** CPU time so far of this JVM (every thread) and of the processes it started. */
+    private static long cpuNanos() {
+        long own = ((com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory
+                .getOperatingSystemMXBean()).getProcessCpuTime();
+        long children = ProcessHandle.current().descendants()
+                .mapToLong(p -> p.info().totalCpuDuration().map(java.time.Duration::toNanos).orElse(0L)).sum();
+        return own + children;
     }
 
     private static double judgeSeconds(List<WorldMap> maps, FaultyRuns length) {

@@ -16,7 +16,11 @@ final class Lines {
 
     private final InputStream in;
     private final OutputStream out;
-    private final byte[] inBuffer = new byte[1 << 16];
+    /**
+     * 8 KB: the JDK reads a pipe into a stack buffer of that size, and mallocs (and frees) one for
+     * every larger read, which cost more than the rest of a tick's protocol work together.
+     */
+    private final byte[] inBuffer = new byte[8192];
     private int inStart;
     private int inEnd;
     private byte[] line = new byte[1 << 12];

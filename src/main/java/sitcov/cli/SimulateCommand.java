@@ -124,7 +124,12 @@ final class SimulateCommand implements Command {
         RunResult result;
         List<Activation> activations;
         try (TraceWriter writer = trace.isPresent() ? new TraceWriter(trace.get(), map.seed(), internalSeed) : null) {
+            // why the controller failed, if it did: the outcome alone does not say
+            String[] failure = new String[1];
             RunObserver observer = (tick, scene, detector) -> {
+                if (scene.autonomousCar().failure() != null) {
+                    failure[0] = scene.autonomousCar().failure().getMessage();
+                }
                 if (recorder != null) {
                     recorder.afterTick(tick, scene, detector);
                 }
@@ -135,6 +140,9 @@ final class SimulateCommand implements Command {
             RunRecord record = Simulator.run(map, internalSeed, faults, controller, observer);
             result = record.result();
             activations = record.activations();
+            if (failure[0] != null) {
+                err.println("simulate: " + failure[0]);
+            }
         } catch (IOException | UncheckedIOException e) {
             err.println("sitcov: simulate: could not write the trace " + trace.orElse(null) + ": "
                     + sitcov.results.IoReason.of(e instanceof UncheckedIOException u ? u.getCause() : (IOException) e,

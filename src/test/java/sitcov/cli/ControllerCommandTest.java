@@ -49,6 +49,17 @@ class ControllerCommandTest {
     }
 
     @Test
+    void aRunWhoseControllerFailsPrintsItsOutcomeAndSaysWhy(@TempDir Path dir) throws IOException {
+        Path script = Files.writeString(dir.resolve("garbage.sh"),
+                "read hello\necho '{\"type\":\"hello\",\"protocol\":1}'\nread reset\nread tick0\necho garbage\nread rest\n");
+        CliRunner result = CliRunner.run("simulate", "--seed", "3", "--controller", "exec:sh " + script);
+        assertEquals(ExitCode.OK, result.exitCode(), result.err());
+        assertTrue(result.out().startsWith("seed 3 internal 3: CONTROLLER_ERROR after 1 ticks"), result.out());
+        assertTrue(result.err().contains("simulate: controller `sh " + script + "`: at tick 0 it wrote 'garbage': not JSON"),
+                result.err());
+    }
+
+    @Test
     void simulateWithAControllerThatIsNeitherBuiltinNorExecIsAUsageError() {
         CliRunner result = CliRunner.run("simulate", "--seed", "3", "--controller", "python3 x.py");
         assertEquals(ExitCode.USAGE, result.exitCode());

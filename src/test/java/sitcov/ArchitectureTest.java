@@ -27,7 +27,7 @@ class ArchitectureTest {
 
     /** Packages that compute and write text only: no drawing, no window. */
     private static final Set<String> HEADLESS = union(SIMULATION,
-            "judge", "experiment", "drivers", "analysis", "verdict", "results");
+            "judge", "experiment", "drivers", "analysis", "verdict", "results", "protocol");
 
     /**
      * Which sitcov packages each package may import (its own is always allowed). Every arrow points down:
@@ -41,6 +41,8 @@ class ArchitectureTest {
             Map.entry("faults", Set.of("engine")),
             Map.entry("control", Set.of("world", "faults", "engine", "geom")),
             Map.entry("vehicles", Set.of("control", "world", "faults", "engine", "geom")),
+            // the controller protocol: a controller program behind the seam, and the builtin car served over it
+            Map.entry("protocol", Set.of("control", "vehicles", "world", "faults", "engine", "geom")),
             Map.entry("oracle", Set.of("control", "vehicles", "world", "engine", "geom")),
             Map.entry("coverage", Set.of("world", "geom")),
             // judging one map: a run, its twin with a fault, the verdict
@@ -59,7 +61,7 @@ class ArchitectureTest {
             Map.entry("viewer", union(SIMULATION, "judge", "experiment", "analysis", "verdict", "results", "render",
                     "figures", "report")),
             Map.entry("cli", union(SIMULATION, "judge", "experiment", "drivers", "analysis", "verdict", "results",
-                    "render", "figures", "report", "viewer")));
+                    "render", "figures", "report", "viewer", "protocol")));
 
     private static final Pattern SITCOV_REFERENCE = Pattern.compile("\\bsitcov\\.([a-z]+)\\.");
     private static final Pattern GUI_REFERENCE = Pattern.compile("\\b(java\\.awt|javax\\.swing)\\b");

@@ -1,5 +1,6 @@
 package sitcov.cli;
 
+import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -7,12 +8,16 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
+import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
 import sitcov.judge.FaultyRuns;
 import sitcov.judge.MapRunner;
+import sitcov.judge.RunObserver;
 import sitcov.judge.Simulator;
 import sitcov.oracle.RunResult;
+import sitcov.protocol.ControllerStartException;
+import sitcov.protocol.ExecControllers;
 import sitcov.world.Layout;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
@@ -35,6 +40,29 @@ final class BenchCommand implements Command {
     private static final long WARM_UP_SEED = 1_000_000L;
     static final int DEFAULT_ROUNDS = 7;
     static final int MAX_ROUNDS = 1000;
+    static final int DEFAULT_PROTOCOL_MAPS = 12;
+    /** Runs over the protocol before the timing: fewer leave the JIT compiling during it. */
+    private static final int PROTOCOL_WARM_UP_RUNS = 3;
+    /**
+     * The trivial controller {@code --protocol} times the protocol with, in Python: it parses every
+     * message with the standard json module and answers every observation with one fixed command
+     * (stand still, wheel straight). It asks for no sensor, as a controller that needs none would;
+     * with {@code --radar} it asks for the radar's tracks and the LIDAR's obstacles, as the builtin car does.
+     */
+    static final String CONSTANT_CONTROLLER = String.join("\n",
+            "import json, sys",
+            "sensors = '[\"radar\",\"obstacles\"]' if sys.argv[1:] == ['--radar'] else '[]'",
+            "out = sys.stdout",
+            "for line in sys.stdin:",
+            "    kind = json.loads(line)['type']",
+            "    if kind == 'hello':",
+            "        out.write('{\"type\":\"hello\",\"protocol\":1,\"name\":\"constant\",\"sensors\":' + sensors + '}\\n')",
+            "    elif kind == 'observation':",
+            "        out.write('{\"type\":\"command\",\"speed_change\":0,\"steering\":0}\\n')",
+            "    else:",
+            "        continue",
+            "    out.flush()",
+            "");
 
     /** Keeps the JIT from dropping work whose result nobody reads. */
     private static volatile long sink;
@@ -47,7 +75,8 @@ final class BenchCommand implements Command {
     @Override
     public String synopsis() {
         return "[--maps K (default: " + DEFAULT_MAPS + ")] [--candidates N (default: " + DEFAULT_CANDIDATES + ")]"
-                + " [--judged J (default: " + DEFAULT_JUDGED + ")] | --vs BUILD [--rounds R (default: " + DEFAULT_ROUNDS + ")]";
+                + " [--judged J (default: " + DEFAULT_JUDGED + ")] | --vs BUILD [--rounds R (default: " + DEFAULT_ROUNDS + ")]"
+                + " | --protocol [--maps K (default: " + DEFAULT_PROTOCOL_MAPS + ")]";
     }
 
     @Override
@@ -59,8 +88,16 @@ final class BenchCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--maps", "--candidates", "--judged", "--vs", "--rounds"),
-                Set.of());
+                Set.of("--protocol"));
         options.noPositional();
+        if (options.has("--protocol")) {
+            for (String other : List.of("--candidates", "--judged", "--vs", "--rounds")) {
+                if (options.has(other)) {
+                    throw new UsageException("bench: --protocol times the controller protocol alone; leave out " + other + ".");
+                }
+            }
+            return protocol(options.count("--maps", 1, MAX_MAPS).orElse(DEFAULT_PROTOCOL_MAPS), out, err);
+        }
         if (options.value("--vs").isPresent()) {
             if (options.value("--maps").isPresent() || options.value("--candidates").isPresent()
                     || options.value("--judged").isPresent()) {
@@ -150,6 +187,99 @@ final class BenchCommand implements Command {
         out.printf(Locale.ROOT, "Judged maps: 1..%d, each run fault-free and once per PAPER fault, as an experiment does.%n",
                 judged);
         return ExitCode.OK;
+    }
+
+    /**
+     * Protocol ticks a second to {@link #CONSTANT_CONTROLLER} (python3, a process of its own): the
+     * car stands at its start for the whole run (5000 ticks) while the traffic moves round it, so
+     * every observation carries the radar tracks and junction signals a real one does. One worker;
+     * pin sitcov and the controller to one core with {@code taskset -c 0} to time them sharing it.
+     */
+    private static int protocol(int maps, PrintStream out, PrintStream err) throws UsageException {
+        Path script;
+        try {
+            script = Files.createTempFile("sitcov-constant-controller", ".py");
+            Files.writeString(script, CONSTANT_CONTROLLER);
+        } catch (IOException e) {
+            err.println("sitcov: bench: could not write the trivial controller to the temporary folder: " + e.getMessage());
+            return ExitCode.FAILURE;
+        }
+        try {
+            ProtocolTiming lean = protocolTicksPerSecond(List.of("python3", script.toString()), maps, err);
+            ProtocolTiming radar = protocolTicksPerSecond(List.of("python3", script.toString(), "--radar"), maps, err);
+            out.printf(Locale.ROOT, "sitcov bench --protocol: one worker, a trivial Python controller (one fixed command)%n%n");
+            out.printf(Locale.ROOT, "  %-44s %12s   %s%n", "measure", "figure", "target");
+            protocolLine(out, "protocol ticks per second, no sensors", lean.perSecond(),
+                    ">= 10000 on one core " + verdict(lean.perSecond() >= 10_000));
+            cpuLine(out, "  CPU a tick, sitcov + controller", lean.cpuMicrosPerTick());
+            protocolLine(out, "protocol ticks per second, radar+obstacles", radar.perSecond(), "the builtin car's sensors");
+            cpuLine(out, "  CPU a tick, sitcov + controller", radar.cpuMicrosPerTick());
+            out.println();
+            out.printf(Locale.ROOT, "Runs: maps 1..%d each, the car standing at its start (5000 ticks a run) while the traffic"
+                    + " moves round it. Both processes on one core: taskset -c 0 sitcov bench --protocol%n", maps);
+            return ExitCode.OK;
+        } finally {
+            try {
+                Files.deleteIfExists(script);
+            } catch (IOException e) {
+                // a temporary file left behind
+            }
+        }
+    }
+
+    private static void cpuLine(PrintStream out, String label, double micros) {
+        out.println(String.format(Locale.ROOT, "  %-44s %9.1f µs   one core to themselves: %.0f ticks a second", label,
+                micros, 1e6 / micros));
+    }
+
+    private static void protocolLine(PrintStream out, String label, double perSecond, String target) {
+        out.println(String.format(Locale.ROOT, "  %-44s %12.0f   %s  (%.1f µs a tick)", label, perSecond, target,
+                1e6 / perSecond));
+    }
+
+    private static ProtocolTiming protocolTicksPerSecond(List<String> command, int maps, PrintStream err)
+            throws UsageException {
+        try (ExecControllers controllers = new ExecControllers(command, Version.current())) {
+            try {
+                controllers.check(null);
+            } catch (ControllerStartException e) {
+                throw new UsageException("bench: --protocol needs python3 on the PATH: " + e.getMessage() + ".");
+            }
+            ControllerFactory worker = controllers.worker(null);
+            err.println("bench: the trivial controller " + (command.size() > 2 ? "asking for the radar and obstacles"
+                    : "asking for no sensor") + ": warming up (" + PROTOCOL_WARM_UP_RUNS + " runs), then " + maps + " runs ...");
+            for (int i = 0; i < PROTOCOL_WARM_UP_RUNS; i++) {
+                WorldMap map = MapGenerator.generate(WARM_UP_SEED + i);
+                sink += Simulator.run(map, map.seed(), Set.of(), RunObserver.NONE, worker).result().ticks();
+            }
+            long ticks = 0;
+            long cpuBefore = cpuNanos();
+            long start = System.nanoTime();
+            for (long seed = 1; seed <= maps; seed++) {
+                ticks += Simulator.run(MapGenerator.generate(seed), seed, Set.of(), RunObserver.NONE, worker).result().ticks();
+            }
+            long nanos = System.nanoTime() - start;
+            long cpu = cpuNanos() - cpuBefore;
+            sink += ticks;
+            return new ProtocolTiming(ticks / (nanos / 1e9), cpu / 1e3 / ticks);
+        }
+    }
+
+    /**
+     * Round trips a second, and the CPU time a tick took in sitcov and in the controller together:
+     * on a machine shared with other work the wall clock measures the others too, the CPU time much
+     * less so, and 10^6 / (µs a tick) is what one core to themselves would allow.
+     */
+    private record ProtocolTiming(double perSecond, double cpuMicrosPerTick) {
+    }
+
+    /** CPU time so far of this JVM (every thread) and of the processes it started. */
+    private static long cpuNanos() {
+        long own = ((com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory
+                .getOperatingSystemMXBean()).getProcessCpuTime();
+        long children = ProcessHandle.current().descendants()
+                .mapToLong(p -> p.info().totalCpuDuration().map(java.time.Duration::toNanos).orElse(0L)).sum();
+        return own + children;
     }
 
     private static double judgeSeconds(List<WorldMap> maps, FaultyRuns length) {

@@ -37,7 +37,8 @@ public final class Main {
                 new CoverageCommand(),
                 new FaultsCommand(),
                 new VersionsCommand(),
-                new BenchCommand()));
+                new BenchCommand(),
+                new ControllerCommand()));
     }
 
     public static void main(String[] args) {

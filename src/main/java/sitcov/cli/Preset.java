@@ -113,7 +113,7 @@ record Preset(Path file, ExperimentConfig config) {
             field = "analysis";
             AnalysisPlan analysis = AnalysisPlan.read(p::getProperty, drivers);
             field = "controller";
-            String controller = ControllerChoice.check(p.getProperty("controller", ExperimentConfig.BUILTIN).strip());
+            String controller = Controllers.check(p.getProperty("controller", ExperimentConfig.BUILTIN).strip());
             return new ExperimentConfig(name, seed, candidates, replications, faults, budget, grid, drivers, sweep,
                     candidateLimit, faultyRuns, analysis, controller);
         } catch (IOException e) {

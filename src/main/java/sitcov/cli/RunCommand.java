@@ -70,7 +70,7 @@ final class RunCommand implements Command {
                 options.count("--replications", 1, ExperimentConfig.MAX_REPLICATIONS).orElse(null), drivers);
         ExperimentConfig config = preset.config();
         if (options.value("--controller").isPresent()) {
-            config = config.withController(ControllerChoice.check(options.value("--controller").get()));
+            config = config.withController(Controllers.check(options.value("--controller").get()));
         }
         Shard shard = shard(options, config);
         if (options.has("--dry-run")) {
@@ -153,7 +153,7 @@ final class RunCommand implements Command {
                 System::nanoTime);
         ControllerSource controllers;
         try {
-            controllers = ControllerChoice.open(config.controller(), folder);
+            controllers = Controllers.open(config.controller(), folder);
         } catch (UsageException e) {
             err.println("sitcov: " + e.getMessage());
             closeQuietly(recorder, err, folder);

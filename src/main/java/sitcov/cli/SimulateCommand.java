@@ -11,7 +11,11 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Collectors;
 import sitcov.faults.Activation;
+import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
+import sitcov.protocol.ControllerChoice;
+import sitcov.protocol.ControllerStartException;
+import sitcov.protocol.ExecControllers;
 import sitcov.judge.RunObserver;
 import sitcov.judge.RunRecord;
 import sitcov.judge.Simulator;
@@ -47,7 +51,9 @@ final class SimulateCommand implements Command {
     public String synopsis() {
         return "--seed S [--internal-seed I (default: S)] [--faults SET] [--png FILE] [--trace FILE.csv]"
                 + " | --load FILE [--internal-seed I] [--faults SET] [--png FILE] [--trace FILE.csv]"
-                + " | --maps N [--seed S0 (default: 1)] [--summary] [--gallery DIR]";
+                + " | --maps N [--seed S0 (default: 1)] [--summary] [--gallery DIR];"
+                + " any of them with [--controller builtin|exec:COMMAND] [--tick-timeout MS (default: "
+                + ExecControllers.DEFAULT_TICK_TIMEOUT_MILLIS + ")] [--controller-log FILE]";
     }
 
     @Override
@@ -58,12 +64,45 @@ final class SimulateCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args,
-                Set.of("--seed", "--internal-seed", "--load", "--png", "--trace", "--maps", "--faults", "--gallery"),
+                Set.of("--seed", "--internal-seed", "--load", "--png", "--trace", "--maps", "--faults", "--gallery",
+                        "--controller", "--tick-timeout", "--controller-log"),
                 Set.of("--summary"));
         options.noPositional();
-        if (options.has("--maps")) {
-            return calibrate(options, out, err);
+        try (ControllerChoice.Workers controllers = controllers(options, err)) {
+            ControllerFactory factory = controllers.worker(options.outputFile("--controller-log").orElse(null));
+            if (options.has("--maps")) {
+                return calibrate(options, factory, out, err);
+            }
+            return simulate(options, factory, out, err);
         }
+    }
+
+    /** The controller --controller names, started once and handshaken before anything runs. */
+    private ControllerChoice.Workers controllers(Options options, PrintStream err) throws UsageException {
+        ControllerChoice choice;
+        try {
+            choice = ControllerChoice.parse(options.value("--controller").orElse("builtin"));
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("simulate: --controller: " + e.getMessage() + ".");
+        }
+        int timeout = options.count("--tick-timeout", 1, Integer.MAX_VALUE)
+                .orElse((int) ExecControllers.DEFAULT_TICK_TIMEOUT_MILLIS);
+        ControllerChoice.Workers workers = choice.open(Version.current(), timeout,
+                ExecControllers.DEFAULT_HANDSHAKE_TIMEOUT_MILLIS);
+        try {
+            String hello = workers.check(null);
+            if (choice instanceof ControllerChoice.Exec) {
+                err.println("simulate: controller " + hello + " (" + choice.text() + ")");
+            }
+        } catch (ControllerStartException e) {
+            workers.close();
+            throw new UsageException("simulate: " + e.getMessage() + "; fix the command given to --controller.");
+        }
+        return workers;
+    }
+
+    private int simulate(Options options, ControllerFactory controller, PrintStream out, PrintStream err)
+            throws UsageException {
         if (options.has("--summary") || options.has("--gallery")) {
             throw new UsageException("simulate: " + (options.has("--summary") ? "--summary" : "--gallery")
                     + " goes with --maps N; one run prints one line anyway (draw it with --png).");
@@ -85,7 +124,12 @@ final class SimulateCommand implements Command {
         RunResult result;
         List<Activation> activations;
         try (TraceWriter writer = trace.isPresent() ? new TraceWriter(trace.get(), map.seed(), internalSeed) : null) {
+            // why the controller failed, if it did: the outcome alone does not say
+            String[] failure = new String[1];
             RunObserver observer = (tick, scene, detector) -> {
+                if (scene.failure() != null) {
+                    failure[0] = scene.failure().getMessage();
+                }
                 if (recorder != null) {
                     recorder.afterTick(tick, scene, detector);
                 }
@@ -93,9 +137,12 @@ final class SimulateCommand implements Command {
                     writer.afterTick(tick, scene, detector);
                 }
             };
-            RunRecord record = Simulator.run(map, internalSeed, faults, observer);
+            RunRecord record = Simulator.run(map, internalSeed, faults, observer, controller);
             result = record.result();
             activations = record.activations();
+            if (failure[0] != null) {
+                err.println("simulate: " + failure[0]);
+            }
         } catch (IOException | UncheckedIOException e) {
             err.println("sitcov: simulate: could not write the trace " + trace.orElse(null) + ": "
                     + sitcov.results.IoReason.of(e instanceof UncheckedIOException u ? u.getCause() : (IOException) e,
@@ -124,7 +171,8 @@ final class SimulateCommand implements Command {
         return ExitCode.OK;
     }
 
-    private int calibrate(Options options, PrintStream out, PrintStream err) throws UsageException {
+    private int calibrate(Options options, ControllerFactory controller, PrintStream out, PrintStream err)
+            throws UsageException {
         for (String single : List.of("--internal-seed", "--load", "--png", "--trace", "--faults")) {
             if (options.has(single)) {
                 throw new UsageException("simulate: " + single + " goes with one run, not with --maps N; drop it,"
@@ -154,7 +202,7 @@ final class SimulateCommand implements Command {
         for (int i = 0; i < maps; i++) {
             long seed = first + i;
             WorldMap map = MapGenerator.generate(seed);
-            RunResult result = Simulator.run(map, seed);
+            RunResult result = Simulator.run(map, seed, Set.of(), RunObserver.NONE, controller).result();
             calibration.add(result);
             if (gallery != null && RunGallery.wentWrong(result)) {
                 try {

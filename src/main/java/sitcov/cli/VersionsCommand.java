@@ -64,9 +64,9 @@ final class VersionsCommand implements Command {
         }
         List<ControllerSource> sources = new ArrayList<>();
         try {
-            sources.add(ControllerChoice.open(plan.reference(), folder));
+            sources.add(Controllers.open(plan.reference(), folder));
             for (String v : plan.variants()) {
-                sources.add(ControllerChoice.open(v, folder));
+                sources.add(Controllers.open(v, folder));
             }
             List<List<VersionVerdict>> judged = judge(plan, sources, threads);
             String csv = VersionsReport.csv(plan, judged);
@@ -145,9 +145,9 @@ final class VersionsCommand implements Command {
         }
         List<String> variantList = new ArrayList<>();
         for (String v : Arrays.stream(variants.split(";")).map(String::strip).toList()) {
-            variantList.add(ControllerChoice.check(v));
+            variantList.add(Controllers.check(v));
         }
-        ControllerChoice.check(reference);
+        Controllers.check(reference);
         int maps = options.count("--maps", 1, MAX_MAPS).orElse(countOf(p.getProperty("maps", "100")));
         long seed = options.seed("--seed").orElse(Long.parseLong(p.getProperty("master_seed", "1").strip()));
         return new VersionsPlan(name, reference, variantList, maps, seed);

@@ -63,7 +63,8 @@ public final class Scene {
     /**
      * Builds the scene of {@code map} for one run: the car under test at its start, driven by the
      * controller {@code controllers} makes for this run, and a moving car at each moving-car start,
-     * all scheduled every tick from tick 0 (the car under test first).
+     * all scheduled every tick from tick 0 (the car under test first). The controller is handed the
+     * run's switchboard {@code faults}.
      */
     public static Scene start(WorldMap map, SimState state, FaultSwitchboard faults, ControllerFactory controllers) {
         Scene scene = new Scene(map, state);

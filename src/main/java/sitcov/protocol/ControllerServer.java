@@ -1,0 +1,106 @@
+package sitcov.protocol;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.util.EnumSet;
+import java.util.Set;
+import sitcov.control.Command;
+import sitcov.control.Controller;
+import sitcov.control.ControllerFactory;
+import sitcov.control.RunEnd;
+import sitcov.control.RunStart;
+import sitcov.engine.RandomStreams;
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSwitchboard;
+import sitcov.world.RoadNetwork;
+
+/**
+ * The controller's side of the protocol: serves any {@link ControllerFactory} over a pair of
+ * streams (stdin and stdout for {@code sitcov controller builtin}). Answers sitcov's hello, starts
+ * a controller at each reset on the map the message carries, answers each observation with the
+ * controller's command and the fault activations of the tick, and tells it the end. Returns at
+ * the end of its input.
+ */
+public final class ControllerServer {
+    private final ControllerFactory controllers;
+    private final String name;
+    private final String version;
+    private final Set<Fault> extraFaults;
+
+    /**
+     * @param extraFaults faults switched on in every run besides those the reset names
+     */
+    public ControllerServer(ControllerFactory controllers, String name, String version, Set<Fault> extraFaults) {
+        this.controllers = controllers;
+        this.name = name;
+        this.version = version;
+        this.extraFaults = Set.copyOf(extraFaults);
+    }
+
+    /** Serves until the input ends; a message that breaks the protocol ends it with the exception. */
+    public void serve(InputStream in, OutputStream out) throws IOException, ProtocolException {
+        Lines lines = new Lines(in, out);
+        JsonWriter w = new JsonWriter();
+        String first = lines.read();
+        if (first == null) {
+            return;
+        }
+        Message hello = Message.parse(first).expect("hello");
+        if (hello.integer("protocol") != Wire.PROTOCOL) {
+            throw new ProtocolException("sitcov speaks protocol " + hello.integer("protocol") + "; this controller speaks "
+                    + Wire.PROTOCOL);
+        }
+        // the builtin car works from its own camera and LIDAR on the map, and from the objects its sensors report
+        Wire.controllerHello(w, name, version, Set.of(), Wire.DEFAULT_SENSORS);
+        lines.write(w);
+        Run run = null;
+        Command command = new Command();
+        for (String line = lines.read(); line != null; line = lines.read()) {
+            Message m = Message.parse(line);
+            switch (m.type()) {
+                case "reset" -> run = start(ResetMessage.read(m));
+                case "observation" -> {
+                    if (run == null) {
+                        throw new ProtocolException("an observation before any reset");
+                    }
+                    run.observation.read(m);
+                    run.tick = run.observation.tick();
+                    command.clear();
+                    run.controller.step(run.observation, command);
+                    Wire.command(w, command, run.activity);
+                    lines.write(w);
+                }
+                case "end" -> {
+                    if (run != null) {
+                        run.controller.end(new RunEnd(m.text("outcome"), m.integer("ticks")));
+                        run = null;
+                    }
+                }
+                default -> throw new ProtocolException("unknown message type \"" + m.type() + "\"");
+            }
+        }
+    }
+
+    /** One run on the controller's side: its controller, the rebuilt observation, its faults. */
+    private static final class Run {
+        Controller controller;
+        WireObservation observation;
+        FaultActivity activity;
+        long tick;
+    }
+
+    private Run start(ResetMessage reset) {
+        Run run = new Run();
+        Set<Fault> faults = EnumSet.noneOf(Fault.class);
+        faults.addAll(reset.faults());
+        faults.addAll(extraFaults);
+        FaultSwitchboard switchboard = new FaultSwitchboard(faults, () -> run.tick);
+        RoadNetwork roads = RoadNetwork.of(reset.map().layout());
+        run.observation = new WireObservation(roads, reset.map().layout().target().orElseThrow());
+        run.activity = new FaultActivity(switchboard);
+        run.controller = controllers.start(new RunStart(reset.map(), reset.internalSeed(),
+                new RandomStreams(reset.internalSeed()), () -> run.tick, switchboard));
+        return run;
+    }
+}

@@ -1,0 +1,289 @@
+package sitcov.protocol;
+
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import sitcov.control.Channel;
+import sitcov.control.Command;
+import sitcov.control.Observation;
+import sitcov.control.RightOfWay;
+import sitcov.control.RunEnd;
+import sitcov.control.SelfReport;
+import sitcov.control.Vehicle;
+import sitcov.faults.Fault;
+import sitcov.faults.FaultSwitchboard;
+import sitcov.geom.Box;
+import sitcov.geom.Compass;
+import sitcov.vehicles.Dynamics;
+
+/**
+ * The messages of protocol version 1 (README, "Test your own controller", "The protocol"), both
+ * ways: what sitcov writes and reads, and what a controller writes and reads. One JSON object a
+ * line; every message has a "type".
+ */
+final class Wire {
+    static final int PROTOCOL = 1;
+    /**
+     * The sensors a controller may ask for at hello, each an observation member sent only to one
+     * that asked: the radar's tracks ("traffic"), the LIDAR's parked cars ("obstacles"), the
+     * camera's marking hits and the LIDAR's raw hits. Leaner lines are read faster: a controller
+     * that needs no sensor asks for none.
+     */
+    static final List<String> SENSORS = List.of("radar", "obstacles", "camera", "lidar");
+    /** What a controller that says nothing of sensors gets: the objects its sensors report, no raw hits. */
+    static final List<String> DEFAULT_SENSORS = List.of("radar", "obstacles");
+    /** A tick's length: the top speed of 2.5 m a tick is 45 km/h. */
+    static final double TICK_SECONDS = 0.2;
+
+    private Wire() {
+    }
+
+    /** What a controller said at hello: who it is and what it wants in each observation. */
+    record Hello(String name, String version, Set<Channel> channels, boolean radar, boolean obstacles, boolean camera,
+                 boolean lidar) {
+    }
+
+    // ---- sitcov -> controller
+
+    static void sitcovHello(JsonWriter w, String sitcovVersion) {
+        w.reset().beginObject().member("type", "hello").member("protocol", PROTOCOL).member("sitcov", sitcovVersion);
+        w.name("channels").beginArray();
+        for (Channel c : Channel.values()) {
+            w.value(c.wireName());
+        }
+        w.endArray();
+        w.name("sensors").beginArray();
+        for (String s : SENSORS) {
+            w.value(s);
+        }
+        w.endArray();
+        w.name("limits").beginObject().member("max_speed", Dynamics.MAX_SPEED).member("max_turn", Dynamics.MAX_TURN)
+                .member("tick_seconds", TICK_SECONDS).member("sensor_range", Observation.SENSOR_RANGE)
+                .endObject();
+        w.endObject();
+    }
+
+    static void observation(JsonWriter w, Observation now, Hello wants) {
+        w.reset().beginObject().member("type", "observation").member("tick", now.tick())
+                .member("x", now.x()).member("y", now.y()).member("heading", now.heading()).member("speed", now.speed());
+        if (wants.radar()) {
+            w.name("traffic").beginArray();
+            List<Vehicle> traffic = now.traffic();
+            for (int i = 0, n = traffic.size(); i < n; i++) {
+                Vehicle v = traffic.get(i);
+                w.beginObject().member("id", v.id()).member("x", v.x()).member("y", v.y()).member("heading", v.heading())
+                        .member("speed", v.speed()).member("length", v.length()).member("width", v.width()).endObject();
+            }
+            w.endArray();
+        }
+        if (wants.obstacles()) {
+            w.name("obstacles").beginArray();
+            List<Box> obstacles = now.obstacles();
+            for (int i = 0, n = obstacles.size(); i < n; i++) {
+                Box b = obstacles.get(i);
+                w.beginObject().member("x", b.centreX()).member("y", b.centreY()).member("bearing", b.bearing())
+                        .member("length", b.length()).member("width", b.width()).endObject();
+            }
+            w.endArray();
+        }
+        w.name("junctions").beginArray();
+        RightOfWay signals = now.rightOfWay();
+        for (int j = 0, n = now.roads().junctions().size(); j < n; j++) {
+            w.beginObject().member("id", j).member("holds", signals.holds(j))
+                    .member("would_grant", signals.wouldGrant(j)).endObject();
+        }
+        w.endArray();
+        if (wants.camera()) {
+            w.name("camera").beginArray();
+            for (int h = 0, n = now.cameraHits(); h < n; h++) {
+                w.beginArray().value(now.cameraHitX(h)).value(now.cameraHitY(h)).endArray();
+            }
+            w.endArray();
+        }
+        if (wants.lidar()) {
+            w.name("lidar").beginArray();
+            for (int h = 0, n = now.lidarHits(); h < n; h++) {
+                w.beginArray().value(now.lidarHitX(h)).value(now.lidarHitY(h)).endArray();
+            }
+            w.endArray();
+        }
+        if (!wants.channels().isEmpty()) {
+            w.name("channels").beginObject();
+            for (Channel c : wants.channels()) {
+                w.member(c.wireName(), now.channel(c));
+            }
+            w.endObject();
+        }
+        w.endObject();
+    }
+
+    static void end(JsonWriter w, RunEnd how) {
+        w.reset().beginObject().member("type", "end").member("outcome", how.outcome()).member("ticks", how.ticks())
+                .endObject();
+    }
+
+    // ---- controller -> sitcov
+
+    /** A controller's hello, checked: protocol 1, channels and sensors sitcov has. */
+    static Hello controllerHello(Message m) throws ProtocolException {
+        m.expect("hello");
+        long protocol = m.integer("protocol");
+        if (protocol != PROTOCOL) {
+            throw new ProtocolException("it speaks protocol " + protocol + "; this sitcov speaks protocol " + PROTOCOL);
+        }
+        Set<Channel> channels = EnumSet.noneOf(Channel.class);
+        List<Object> asked = m.optionalList("channels");
+        for (Object name : asked) {
+            Channel c = name instanceof String s ? Channel.ofWireName(s).orElse(null) : null;
+            if (c == null) {
+                throw new ProtocolException("it asks for the channel " + name + ", which sitcov does not have; the"
+                        + " channels are " + String.join(", ", channelNames()));
+            }
+            channels.add(c);
+        }
+        List<Object> sensors = m.has("sensors") ? m.list("sensors") : List.copyOf(DEFAULT_SENSORS);
+        for (Object sensor : sensors) {
+            if (!SENSORS.contains(sensor)) {
+                throw new ProtocolException("it asks for the sensor " + sensor + "; the sensors are "
+                        + String.join(", ", SENSORS));
+            }
+        }
+        String name = m.has("name") ? m.text("name") : "unnamed";
+        String version = m.has("version") ? m.text("version") : "";
+        return new Hello(name, version, channels, sensors.contains("radar"), sensors.contains("obstacles"),
+                sensors.contains("camera"), sensors.contains("lidar"));
+    }
+
+    private static List<String> channelNames() {
+        List<String> names = new ArrayList<>();
+        for (Channel c : Channel.values()) {
+            names.add(c.wireName());
+        }
+        return names;
+    }
+
+    /**
+     * Reads a command into {@code out} (cleared), and reports its fault activations into
+     * {@code faults}: ids it reached this tick, and how many times each was effective.
+     */
+    static void command(Message m, Command out, FaultSwitchboard faults) throws ProtocolException {
+        m.expect("command");
+        // a speed asked for outright moves the car to the bit; otherwise the change is added to the speed
+        if (m.has("speed")) {
+            out.speed(m.number("speed"));
+        } else {
+            out.speedChange(m.number("speed_change"));
+        }
+        out.steering(m.number("steering"));
+        List<Object> releases = m.optionalList("release");
+        for (int i = 0; i < releases.size(); i++) {
+            out.release(junctionId(m.wholeAt(releases, i, "release")));
+        }
+        List<Object> claims = m.optionalList("claim");
+        for (int i = 0; i < claims.size(); i++) {
+            out.claim(junctionId(m.wholeAt(claims, i, "claim")));
+        }
+        if (m.has("report")) {
+            Message r = m.object("report");
+            SelfReport report = out.report();
+            report.overtaking(r.optionalFlag("overtaking")).crossingJunction(r.optionalFlag("crossing_junction"))
+                    .waitingAtJunction(r.optionalFlag("waiting")).stage(r.optionalText("stage"))
+                    .limitedBy(r.optionalText("limited_by")).steeredBy(r.optionalText("steered_by"));
+            String lane = r.optionalText("lane");
+            report.lane(lane == null ? null : compass(lane, "command.report.lane"));
+        }
+        if (m.has("faults")) {
+            Message f = m.object("faults");
+            List<Object> reached = f.optionalList("reached");
+            for (int i = 0; i < reached.size(); i++) {
+                faults.reached(fault(f.wholeAt(reached, i, "reached")));
+            }
+            List<Object> effective = f.optionalList("effective");
+            for (int i = 0; i < effective.size(); i++) {
+                if (!(effective.get(i) instanceof List<?> pair) || pair.size() != 2) {
+                    throw new ProtocolException("command.faults.effective[" + i + "] must be a pair [id, count]");
+                }
+                @SuppressWarnings("unchecked")
+                List<Object> idCount = (List<Object>) pair;
+                Fault fault = fault(f.wholeAt(idCount, 0, "effective[" + i + "]"));
+                long count = f.wholeAt(idCount, 1, "effective[" + i + "]");
+                for (long k = 0; k < count; k++) {
+                    faults.effective(fault);
+                }
+            }
+        }
+    }
+
+    private static int junctionId(long id) throws ProtocolException {
+        if (id < 0 || id > Integer.MAX_VALUE) {
+            throw new ProtocolException("a junction id must be 0 or more, got " + id);
+        }
+        return (int) id;
+    }
+
+    private static Fault fault(long id) throws ProtocolException {
+        if (id < 0 || id >= Fault.values().length) {
+            throw new ProtocolException("there is no fault " + id + " (ids are 0.." + (Fault.values().length - 1) + ")");
+        }
+        return Fault.ofId((int) id);
+    }
+
+    static String name(Compass c) {
+        return c.name().toLowerCase(Locale.ROOT);
+    }
+
+    static Compass compass(String name, String where) throws ProtocolException {
+        for (Compass c : Compass.values()) {
+            if (name(c).equals(name)) {
+                return c;
+            }
+        }
+        throw new ProtocolException(where + " must be north, east, south or west, got " + name);
+    }
+
+    // ---- controller side: what a controller writes
+
+    static void controllerHello(JsonWriter w, String name, String version, Set<Channel> channels, List<String> sensors) {
+        w.reset().beginObject().member("type", "hello").member("protocol", PROTOCOL).member("name", name)
+                .member("version", version);
+        w.name("channels").beginArray();
+        for (Channel c : channels) {
+            w.value(c.wireName());
+        }
+        w.endArray().name("sensors").beginArray();
+        for (String sensor : sensors) {
+            w.value(sensor);
+        }
+        w.endArray().endObject();
+    }
+
+    /** A command, with the fault activations since the last one ({@code activity}). */
+    static void command(JsonWriter w, Command c, FaultActivity activity) {
+        w.reset().beginObject().member("type", "command");
+        if (Double.isNaN(c.speed())) {
+            w.member("speed_change", c.speedChange());
+        } else {
+            w.member("speed", c.speed());
+        }
+        w.member("steering", c.steering());
+        w.name("claim").beginArray();
+        for (int i = 0; i < c.claimCount(); i++) {
+            w.value(c.claimAt(i));
+        }
+        w.endArray();
+        w.name("release").beginArray();
+        for (int i = 0; i < c.releaseCount(); i++) {
+            w.value(c.releaseAt(i));
+        }
+        w.endArray();
+        SelfReport r = c.report();
+        w.name("report").beginObject().member("overtaking", r.overtaking())
+                .member("crossing_junction", r.crossingJunction()).member("waiting", r.waitingAtJunction())
+                .member("lane", r.lane() == null ? null : name(r.lane())).member("stage", r.stage())
+                .member("limited_by", r.limitedBy()).member("steered_by", r.steeredBy()).endObject();
+        activity.write(w);
+        w.endObject();
+    }
+}

@@ -1,0 +1,11 @@
+/**
+ * Controllers as programs speaking JSON Lines over stdin and stdout, in lockstep (README, "Test your
+ * own controller", "The protocol"). sitcov's side: {@link sitcov.protocol.ExecControllers} starts a
+ * program per worker thread, under a watchdog shell, and its {@link sitcov.protocol.ProxyFactory}
+ * hands the world a controller that sends observations and reads commands within the per-tick
+ * timeout. The controller's side: {@link sitcov.protocol.ControllerServer} serves any
+ * {@link sitcov.control.ControllerFactory} (the builtin car, for {@code sitcov controller builtin}).
+ * {@link sitcov.protocol.ControllerChoice} reads {@code builtin} or {@code exec:COMMAND}. The JSON
+ * reader and writer are its own (JDK only); doubles cross the pipe bit for bit.
+ */
+package sitcov.protocol;

@@ -12,12 +12,15 @@ import sitcov.vehicles.AutonomousCar;
 import sitcov.vehicles.Dynamics;
 import sitcov.vehicles.MovingCar;
 import sitcov.vehicles.Scene;
+import sitcov.vehicles.Vehicle;
 
 /**
  * The accident oracle, stepped every tick after all vehicles moved. Each accident is an event:
  * it is recorded when the car enters the state (a new overlap, going off the road, crossing the
  * centre line), not again while the state lasts. It also ends the run: when the car reaches the
- * Target, or with a TIMEOUT event after 5000 ticks.
+ * Target, or with a TIMEOUT event after 5000 ticks. Accidents are judged from what anyone sees of
+ * the car — its footprint, pose and speed against the map and the other vehicles ({@link CentreLineExcuse},
+ * {@link BlameRules}); only the end at the Target still takes the car's word.
  */
 public final class AccidentDetector implements Steppable {
     /** After every vehicle has moved. */
@@ -29,6 +32,7 @@ public final class AccidentDetector implements Steppable {
     private final List<Accident> accidents = new ArrayList<>();
     private final Map<Blame, Integer> excused = new EnumMap<>(Blame.class);
     private final CentreLine centreLine;
+    private final CentreLineExcuse centreLineExcuse;
     private boolean offRoad;
     private boolean overCentreLine;
     private Outcome outcome;
@@ -39,6 +43,7 @@ public final class AccidentDetector implements Steppable {
         this.touchingParked = new boolean[scene.parkedBodies().size()];
         this.touchingMoving = new boolean[scene.movingCars().size()];
         this.centreLine = new CentreLine(scene.network());
+        this.centreLineExcuse = new CentreLineExcuse(scene.network(), scene.parkedCars());
     }
 
     @Override
@@ -59,11 +64,13 @@ public final class AccidentDetector implements Steppable {
             record(tick, AccidentType.LEAVEROAD, car, -1);
         }
         offRoad = off;
-        boolean over = centreLine.isOver(car, body) && !car.overtakingStage().isPassing() && !car.isCrossingJunction();
-        if (over && !overCentreLine) {
+        boolean over = centreLine.isOver(body, car.headingDx(), car.headingDy());
+        // the excuse is judged from the footprint and the map, never from what the car says it is doing
+        boolean unexcused = over && !centreLineExcuse.applies(body);
+        if (unexcused && !overCentreLine) {
             record(tick, AccidentType.CROSSCENTRELINE, car, -1);
         }
-        overCentreLine = over;
+        overCentreLine = unexcused;
         List<MovingCar> moving = scene.movingCars();
         for (int i = 0; i < moving.size(); i++) {
             MovingCar other = moving.get(i);
@@ -86,7 +93,7 @@ public final class AccidentDetector implements Steppable {
         }
     }
 
-    private void record(long tick, AccidentType type, AutonomousCar car, int other) {
+    private void record(long tick, AccidentType type, Vehicle car, int other) {
         accidents.add(new Accident(tick, type, car.x(), car.y(), other));
     }
 

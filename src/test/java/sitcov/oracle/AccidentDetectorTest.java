@@ -139,6 +139,29 @@ class AccidentDetectorTest {
     }
 
     @Test
+    void startingOverTheLineBehindAParkedCarInItsLaneIsPassingItNotAnAccident() {
+        // the same footprint as above, with a car parked in the east-bound lane at x ∈ [57.5, 62.5]:
+        // its near end is 8.5 m ahead of the footprint's middle (x = 49). At tick 0 the car has not
+        // begun to overtake, so only the geometry can excuse it.
+        Layout layout = straightFrom(new StartPose(new Vec2(50, 51.5), Compass.EAST),
+                List.of(Situations.parkedInEastboundLane(0, 60)), null);
+
+        assertEquals(List.of(), firstTicks(layout, 1));
+    }
+
+    @Test
+    void startingOverTheLineWithTheParkedCarFarAheadIsCrossingTheCentreLine() {
+        // the parked car at x ∈ [117.5, 122.5], 68.5 m ahead of the footprint's middle
+        Layout layout = straightFrom(new StartPose(new Vec2(50, 51.5), Compass.EAST),
+                List.of(Situations.parkedInEastboundLane(0, 120)), null);
+
+        List<Accident> accidents = firstTicks(layout, 1);
+
+        assertEquals(1, accidents.size(), accidents.toString());
+        assertEquals(AccidentType.CROSSCENTRELINE, accidents.get(0).type());
+    }
+
+    @Test
     void anAccidentIsAnEventCountedWhenTheStateIsEnteredNotEveryTickItLasts() {
         // start off the road as above, then drive on to the Target; whatever the car does, the
         // LEAVEROAD events must be exactly the ticks at which its footprint went from on to off
@@ -188,18 +211,16 @@ class AccidentDetectorTest {
 
     @Test
     void aFootprintIsOverTheCentreLineWhenACornerIsInTheOtherLaneOutsideJunctions() {
-        Scene scene = straightScene();
-        AutonomousCar car = scene.autonomousCar(); // its lane: EAST
-        CentreLine centreLine = new CentreLine(scene.network());
+        CentreLine centreLine = new CentreLine(straightScene().network());
 
-        // front centre y = 48.5: corners at y = 47.5 and 49.5, both in the east-bound half
-        assertFalse(centreLine.isOver(car, Box.behind(60, 48.5, 90, 2, 2)));
+        // facing east (bearing 90), so its lane is the east-bound half; front centre y = 48.5: corners at y = 47.5 and 49.5, both in the east-bound half
+        assertFalse(centreLine.isOver(Box.behind(60, 48.5, 90, 2, 2)));
         // front centre y = 49.2: corners at y = 50.2, 0.2 m into the west-bound half
-        assertTrue(centreLine.isOver(car, Box.behind(60, 49.2, 90, 2, 2)));
+        assertTrue(centreLine.isOver(Box.behind(60, 49.2, 90, 2, 2)));
         // corners exactly on the centre (y = 50) are not over it
-        assertFalse(centreLine.isOver(car, Box.behind(60, 49, 90, 2, 2)));
+        assertFalse(centreLine.isOver(Box.behind(60, 49, 90, 2, 2)));
         // straddling the centre inside the east dead-end square x ∈ [174, 180]: corners at x 176, 178
-        assertFalse(centreLine.isOver(car, Box.behind(178, 50, 90, 2, 2)));
+        assertFalse(centreLine.isOver(Box.behind(178, 50, 90, 2, 2)));
     }
 
     @Test

@@ -6,10 +6,10 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 import sitcov.control.ControllerFailure;
+import sitcov.control.Vehicle;
 import sitcov.engine.SimState;
 import sitcov.engine.Steppable;
 import sitcov.geom.Box;
-import sitcov.control.Vehicle;
 import sitcov.vehicles.Dynamics;
 import sitcov.vehicles.Telemetry;
 
@@ -17,7 +17,9 @@ import sitcov.vehicles.Telemetry;
  * The accident oracle, stepped every tick after all vehicles moved. Each accident is an event:
  * it is recorded when the car enters the state (a new overlap, going off the road, crossing the
  * centre line), not again while the state lasts. It also ends the run: when the car reaches the
- * Target, or with a TIMEOUT event after 5000 ticks.
+ * Target, or with a TIMEOUT event after 5000 ticks. Accidents are judged from what anyone sees of
+ * the car — its footprint, pose and speed against the map and the other vehicles ({@link CentreLineExcuse},
+ * {@link BlameRules}); only the end at the Target still takes the car's word.
  */
 public final class AccidentDetector implements Steppable {
     /** After every vehicle has moved. */
@@ -29,6 +31,7 @@ public final class AccidentDetector implements Steppable {
     private final List<Accident> accidents = new ArrayList<>();
     private final Map<Blame, Integer> excused = new EnumMap<>(Blame.class);
     private final CentreLine centreLine;
+    private final CentreLineExcuse centreLineExcuse;
     private boolean offRoad;
     private boolean overCentreLine;
     private Outcome outcome;
@@ -39,6 +42,7 @@ public final class AccidentDetector implements Steppable {
         this.touchingParked = new boolean[run.parkedBodies().size()];
         this.touchingMoving = new boolean[run.movingCars().size()];
         this.centreLine = new CentreLine(run.network());
+        this.centreLineExcuse = new CentreLineExcuse(run.network(), run.map().layout().parkedCars());
     }
 
     @Override
@@ -59,17 +63,19 @@ public final class AccidentDetector implements Steppable {
             record(tick, AccidentType.LEAVEROAD, car, -1);
         }
         offRoad = off;
-        boolean over = centreLine.isOver(car, run.selfReport(), body) && !run.selfReport().overtaking() && !run.selfReport().crossingJunction();
-        if (over && !overCentreLine) {
+        boolean over = centreLine.isOver(body, car.headingDx(), car.headingDy());
+        // the excuse is judged from the footprint and the map, never from what the car says it is doing
+        boolean unexcused = over && !centreLineExcuse.applies(body);
+        if (unexcused && !overCentreLine) {
             record(tick, AccidentType.CROSSCENTRELINE, car, -1);
         }
-        overCentreLine = over;
+        overCentreLine = unexcused;
         List<? extends Vehicle> moving = run.movingCars();
         for (int i = 0; i < moving.size(); i++) {
             Vehicle other = moving.get(i);
             boolean touching = other.isActive() && body.overlaps(other.footprint());
             if (touching && !touchingMoving[i]) {
-                Blame blame = BlameRules.judge(car, run.selfReport(), other, centreLine, over);
+                Blame blame = BlameRules.judge(car, other, centreLine, over);
                 if (blame.isAccident()) {
                     record(tick, AccidentType.CLASHWITHOTHERCAR, car, other.id());
                 } else {

@@ -1,15 +1,22 @@
 package sitcov.oracle;
 
 import sitcov.geom.Bearing;
-import sitcov.control.SelfReport;
 import sitcov.control.Vehicle;
 
-/** Decides, by the named {@link Blame} rules, whether a contact with a moving car is the car's fault. */
+/**
+ * Decides, by the named {@link Blame} rules, whether a contact with a moving car is the car's fault,
+ * from what anyone sees of both: poses, speeds, footprints.
+ */
 final class BlameRules {
     private BlameRules() {
     }
 
-    static Blame judge(Vehicle car, SelfReport said, Vehicle other, CentreLine centreLine, boolean carOverCentreLine) {
+    /**
+     * {@code carOverCentreLine} is whether the car's footprint is over the centre line at all, excused
+     * or not: a car out in the other lane, even passing a parked car with good reason, did not keep to
+     * its own lane, so a car coming the other way there is not in the wrong lane.
+     */
+    static Blame judge(Vehicle car, Vehicle other, CentreLine centreLine, boolean carOverCentreLine) {
         if (car.speed() == 0) {
             return Blame.EXCUSED_STANDING_STILL;
         }
@@ -21,7 +28,7 @@ final class BlameRules {
         if (centreLine.touches(other.footprint())) {
             return Blame.EXCUSED_OTHER_ON_CENTRE_LINE;
         }
-        if (headingDifference > 135 && !carOverCentreLine && !said.overtaking()) {
+        if (headingDifference > 135 && !carOverCentreLine) {
             return Blame.EXCUSED_OTHER_IN_WRONG_LANE;
         }
         return Blame.AT_FAULT;

@@ -139,6 +139,29 @@ class AccidentDetectorTest {
     }
 
     @Test
+    void startingOverTheLineBehindAParkedCarInItsLaneIsPassingItNotAnAccident() {
+        // the same footprint as above, with a car parked in the east-bound lane at x ∈ [57.5, 62.5]:
+        // its near end is 8.5 m ahead of the footprint's middle (x = 49). At tick 0 the car has not
+        // begun to overtake, so only the geometry can excuse it.
+        Layout layout = straightFrom(new StartPose(new Vec2(50, 51.5), Compass.EAST),
+                List.of(Situations.parkedInEastboundLane(0, 60)), null);
+
+        assertEquals(List.of(), firstTicks(layout, 1));
+    }
+
+    @Test
+    void startingOverTheLineWithTheParkedCarFarAheadIsCrossingTheCentreLine() {
+        // the parked car at x ∈ [117.5, 122.5], 68.5 m ahead of the footprint's middle
+        Layout layout = straightFrom(new StartPose(new Vec2(50, 51.5), Compass.EAST),
+                List.of(Situations.parkedInEastboundLane(0, 120)), null);
+
+        List<Accident> accidents = firstTicks(layout, 1);
+
+        assertEquals(1, accidents.size(), accidents.toString());
+        assertEquals(AccidentType.CROSSCENTRELINE, accidents.get(0).type());
+    }
+
+    @Test
     void anAccidentIsAnEventCountedWhenTheStateIsEnteredNotEveryTickItLasts() {
         // start off the road as above, then drive on to the Target; whatever the car does, the
         // LEAVEROAD events must be exactly the ticks at which its footprint went from on to off
@@ -188,18 +211,16 @@ class AccidentDetectorTest {
 
     @Test
     void aFootprintIsOverTheCentreLineWhenACornerIsInTheOtherLaneOutsideJunctions() {
-        Scene scene = straightScene();
-        AutonomousCar car = scene.autonomousCar(); // its lane: EAST
-        CentreLine centreLine = new CentreLine(scene.network());
+        CentreLine centreLine = new CentreLine(straightScene().network());
 
-        // front centre y = 48.5: corners at y = 47.5 and 49.5, both in the east-bound half
-        assertFalse(centreLine.isOver(car, car.selfReport(), Box.behind(60, 48.5, 90, 2, 2)));
+        // facing east (bearing 90), so its lane is the east-bound half; front centre y = 48.5: corners at y = 47.5 and 49.5, both in the east-bound half
+        assertFalse(centreLine.isOver(Box.behind(60, 48.5, 90, 2, 2)));
         // front centre y = 49.2: corners at y = 50.2, 0.2 m into the west-bound half
-        assertTrue(centreLine.isOver(car, car.selfReport(), Box.behind(60, 49.2, 90, 2, 2)));
+        assertTrue(centreLine.isOver(Box.behind(60, 49.2, 90, 2, 2)));
         // corners exactly on the centre (y = 50) are not over it
-        assertFalse(centreLine.isOver(car, car.selfReport(), Box.behind(60, 49, 90, 2, 2)));
+        assertFalse(centreLine.isOver(Box.behind(60, 49, 90, 2, 2)));
         // straddling the centre inside the east dead-end square x ∈ [174, 180]: corners at x 176, 178
-        assertFalse(centreLine.isOver(car, car.selfReport(), Box.behind(178, 50, 90, 2, 2)));
+        assertFalse(centreLine.isOver(Box.behind(178, 50, 90, 2, 2)));
     }
 
     @Test
@@ -235,7 +256,7 @@ class AccidentDetectorTest {
         // head-on in its lane while it is over the centre line: every other rule would blame it
         Vehicle oncoming = new Other(car.x() + 4, 48.5, 270, 1);
 
-        assertEquals(Blame.EXCUSED_STANDING_STILL, BlameRules.judge(car, car.selfReport(), oncoming, centreLine, true));
+        assertEquals(Blame.EXCUSED_STANDING_STILL, BlameRules.judge(car, oncoming, centreLine, true));
     }
 
     @Test
@@ -245,10 +266,10 @@ class AccidentDetectorTest {
         CentreLine centreLine = new CentreLine(scene.network());
         // 1 m behind its front (inside its body), same way, faster
         Vehicle faster = new Other(car.x() - 1, 48.5, 90, car.speed() + 0.5);
-        assertEquals(Blame.EXCUSED_HIT_FROM_BEHIND, BlameRules.judge(car, car.selfReport(), faster, centreLine, false));
+        assertEquals(Blame.EXCUSED_HIT_FROM_BEHIND, BlameRules.judge(car, faster, centreLine, false));
         // the excuse comes before the centre-line one: faster and on the centre line (y ∈ [49, 51])
         Vehicle fasterOnLine = new Other(car.x() - 1, 50, 90, car.speed() + 0.5);
-        assertEquals(Blame.EXCUSED_HIT_FROM_BEHIND, BlameRules.judge(car, car.selfReport(), fasterOnLine, centreLine, false));
+        assertEquals(Blame.EXCUSED_HIT_FROM_BEHIND, BlameRules.judge(car, fasterOnLine, centreLine, false));
     }
 
     @Test
@@ -260,8 +281,8 @@ class AccidentDetectorTest {
         Vehicle slowerBehind = new Other(car.x() - 1, 48.5, 90, 0);
         Vehicle slowerAhead = new Other(car.x() + 4.5, 48.5, 90, 0);
 
-        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, car.selfReport(), slowerBehind, centreLine, false));
-        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, car.selfReport(), slowerAhead, centreLine, false));
+        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, slowerBehind, centreLine, false));
+        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, slowerAhead, centreLine, false));
     }
 
     @Test
@@ -272,7 +293,7 @@ class AccidentDetectorTest {
         // oncoming, centred on the centre line: y ∈ [49, 51]
         Vehicle straddling = new Other(car.x() + 5, 50, 270, 1);
 
-        assertEquals(Blame.EXCUSED_OTHER_ON_CENTRE_LINE, BlameRules.judge(car, car.selfReport(), straddling, centreLine, false));
+        assertEquals(Blame.EXCUSED_OTHER_ON_CENTRE_LINE, BlameRules.judge(car, straddling, centreLine, false));
     }
 
     @Test
@@ -283,8 +304,8 @@ class AccidentDetectorTest {
         // head-on in the east-bound lane, y ∈ [47.5, 49.5]: not on the centre strip
         Vehicle wrongWay = new Other(car.x() + 4, 48.5, 270, 1);
 
-        assertEquals(Blame.EXCUSED_OTHER_IN_WRONG_LANE, BlameRules.judge(car, car.selfReport(), wrongWay, centreLine, false));
-        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, car.selfReport(), wrongWay, centreLine, true));
+        assertEquals(Blame.EXCUSED_OTHER_IN_WRONG_LANE, BlameRules.judge(car, wrongWay, centreLine, false));
+        assertEquals(Blame.AT_FAULT, BlameRules.judge(car, wrongWay, centreLine, true));
     }
 
     // ---- results ----

@@ -84,11 +84,24 @@ final class RunCommand implements Command {
         }
         Path folder = folder(options, config, shard);
         Manifest manifest = new Manifest(config, Version.current(), shard, false, false);
+        // a controller program that cannot start is refused before a results folder is made for it
+        ControllerSource controllers = Controllers.open(config.controller(), folder);
         Map<String, String> execution = execution(threads);
         execution.put("preset_file", preset.file().toString());
         ResultsRecorder recorder;
         try {
-            recorder = ResultsRecorder.create(folder, manifest, execution, System::nanoTime);
+            recorder = create(folder, manifest, execution);
+        } catch (UsageException e) {
+            controllers.close();
+            throw e;
+        }
+        return execute(recorder, controllers, folder, threads, "", out, err);
+    }
+
+    private static ResultsRecorder create(Path folder, Manifest manifest, Map<String, String> execution)
+            throws UsageException {
+        try {
+            return ResultsRecorder.create(folder, manifest, execution, System::nanoTime);
         } catch (IOException e) {
             throw new UsageException("run: cannot create the results folder " + folder + ": " + IoReason.of(e, folder)
                     + "; choose a writable --out.");
@@ -97,7 +110,6 @@ final class RunCommand implements Command {
         } catch (IllegalArgumentException e) {
             throw new UsageException("run: " + e.getMessage() + "; name a new folder with --out.");
         }
-        return execute(recorder, folder, threads, "", out, err);
     }
 
     private int resume(Options options, int threads, PrintStream out, PrintStream err) throws UsageException {
@@ -128,8 +140,15 @@ final class RunCommand implements Command {
             if (!manifest.checked()) {
                 err.println("sitcov: run: " + Manifest.uncheckedWarning(folder) + ".");
             }
-            ResultsRecorder recorder = ResultsRecorder.resume(folder, manifest, execution(threads), System::nanoTime);
-            return execute(recorder, folder, threads, " (resumed with " + recorder.journal().size() + " maps judged before)",
+            ControllerSource controllers = Controllers.open(manifest.config().controller(), folder);
+            ResultsRecorder recorder;
+            try {
+                recorder = ResultsRecorder.resume(folder, manifest, execution(threads), System::nanoTime);
+            } catch (IOException | RuntimeException e) {
+                controllers.close();
+                throw e;
+            }
+            return execute(recorder, controllers, folder, threads, " (resumed with " + recorder.journal().size() + " maps judged before)",
                     out, err);
         } catch (IOException e) {
             throw new UsageException("run: cannot resume " + folder + ": " + IoReason.of(e, folder) + ".");
@@ -138,27 +157,12 @@ final class RunCommand implements Command {
         }
     }
 
-    private static void closeQuietly(ResultsRecorder recorder, PrintStream err, Path folder) {
-        try {
-            recorder.close();
-        } catch (IOException e) {
-            err.println("sitcov: run: could not close the journal in " + folder + ": " + IoReason.of(e) + ".");
-        }
-    }
-
-    private int execute(ResultsRecorder recorder, Path folder, int threads, String note, PrintStream out, PrintStream err) {
+    private int execute(ResultsRecorder recorder, ControllerSource controllers, Path folder, int threads, String note,
+                        PrintStream out, PrintStream err) {
         Manifest manifest = recorder.manifest();
         ExperimentConfig config = manifest.config();
         ProgressListener progress = new ProgressListener(err, err == System.err && System.console() != null,
                 System::nanoTime);
-        ControllerSource controllers;
-        try {
-            controllers = Controllers.open(config.controller(), folder);
-        } catch (UsageException e) {
-            err.println("sitcov: " + e.getMessage());
-            closeQuietly(recorder, err, folder);
-            return ExitCode.USAGE;
-        }
         ExperimentRunner runner = new ExperimentRunner(config, drivers, manifest.shard(), recorder.journal(), threads,
                 System::nanoTime, List.of(recorder, progress), controllers);
         err.println(plan(runner, config, manifest.shard(), threads) + ", into " + folder + note);

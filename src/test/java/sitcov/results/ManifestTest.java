@@ -54,6 +54,24 @@ class ManifestTest {
         assertEquals(List.of("coverage-filter", "random"), read.primaryDrivers());
     }
 
+    @Test
+    void theControllerIsRecordedOnlyWhenItIsNotTheBuiltinCarAndIsPartOfTheExperimentsIdentity() throws Exception {
+        ExperimentConfig builtin = new ExperimentConfig("ctl", 3, 10, 2, FaultSet.parse("19"), BudgetKind.TICKS,
+                GridDefinition.paper(), List.of("coverage-filter", "random"), List.of(), 100, FaultyRuns.UNTIL_VERDICT);
+        new Manifest(builtin, "test", Shard.WHOLE, true, false).write(dir);
+        assertFalse(Files.readString(dir.resolve(ResultsFolder.MANIFEST)).contains("controller="),
+                "folders of the builtin car read as those written before controllers had a name");
+        assertEquals(ExperimentConfig.BUILTIN, Manifest.read(dir).config().controller());
+
+        ExperimentConfig served = builtin.withController("exec:java -cp target/classes sitcov.cli.Main controller builtin");
+        Path other = dir.resolve("served");
+        Files.createDirectories(other);
+        new Manifest(served, "test", Shard.WHOLE, true, false).write(other);
+        assertEquals(served.controller(), Manifest.read(other).config().controller());
+        assertFalse(new Manifest(builtin, "test", Shard.WHOLE, true, false).identity()
+                .equals(new Manifest(served, "test", Shard.WHOLE, true, false).identity()), "another controller is another experiment");
+    }
+
     private Path written() throws Exception {
         ExperimentConfig config = new ExperimentConfig("edited", 3, 10, 2, FaultSet.parse("19"), BudgetKind.TICKS,
                 GridDefinition.paper(), List.of("coverage-filter", "random"), List.of(), 100, FaultyRuns.UNTIL_VERDICT);

@@ -37,7 +37,7 @@ final class VersionsCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "PRESET | --reference SPEC --variants SPEC[;SPEC…]  [--maps N] [--seed S0] [--threads T] [--out DIR]";
+        return "PRESET | --reference CONTROLLER --variants CONTROLLER[;CONTROLLER…]  [--maps N] [--seed S0] [--threads T] [--out DIR]";
     }
 
     @Override

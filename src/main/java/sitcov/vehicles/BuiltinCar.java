@@ -1,6 +1,5 @@
 package sitcov.vehicles;
 
-import sitcov.control.Vehicle;
 import java.util.List;
 import java.util.Set;
 import java.util.random.RandomGenerator;
@@ -18,9 +17,9 @@ import sitcov.geom.Compass;
 import sitcov.world.Dimensions;
 import sitcov.world.Road;
 import sitcov.world.RoadNetwork;
+import sitcov.world.StartPose;
 import sitcov.world.Target;
 import sitcov.world.WorldMap;
-import sitcov.world.StartPose;
 
 /**
  * The builtin controller: sitcov's own autonomous car, the first system under test, its twenty

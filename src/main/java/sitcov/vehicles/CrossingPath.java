@@ -1,7 +1,7 @@
 package sitcov.vehicles;
 
-import sitcov.control.Vehicle;
 import java.util.Arrays;
+import sitcov.control.Vehicle;
 import sitcov.geom.Bearing;
 import sitcov.geom.Compass;
 import sitcov.world.Dimensions;

@@ -1,8 +1,8 @@
 package sitcov.vehicles;
 
-import sitcov.control.Vehicle;
 import java.util.List;
 import java.util.random.RandomGenerator;
+import sitcov.control.Vehicle;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
 import sitcov.geom.Bearing;

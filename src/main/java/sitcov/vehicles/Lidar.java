@@ -1,7 +1,7 @@
 package sitcov.vehicles;
 
-import sitcov.control.Vehicle;
 import java.util.List;
+import sitcov.control.Vehicle;
 import sitcov.geom.Bearing;
 import sitcov.geom.Box;
 import sitcov.geom.Compass;

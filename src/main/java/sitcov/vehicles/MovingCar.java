@@ -1,9 +1,9 @@
 package sitcov.vehicles;
 
-import sitcov.control.Vehicle;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.random.RandomGenerator;
+import sitcov.control.Vehicle;
 import sitcov.engine.SimState;
 import sitcov.engine.Steppable;
 import sitcov.geom.Bearing;

@@ -1,6 +1,5 @@
 package sitcov.vehicles;
 
-import sitcov.control.Vehicle;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;

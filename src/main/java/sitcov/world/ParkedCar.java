@@ -2,8 +2,6 @@ package sitcov.world;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.ArrayList;
-import java.util.List;
 import sitcov.geom.Box;
 import sitcov.geom.Vec2;
 

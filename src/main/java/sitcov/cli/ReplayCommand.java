@@ -8,6 +8,8 @@ import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import sitcov.faults.Fault;
+import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.MapId;
 import sitcov.judge.FaultOutcome;
 import sitcov.judge.FaultVerdict;
 import sitcov.judge.FaultyRuns;
@@ -23,6 +25,7 @@ import sitcov.render.ReplayAnimation;
 import sitcov.render.ReplayPicture;
 import sitcov.render.RunRenderer;
 import sitcov.render.TrajectoryRecorder;
+import sitcov.results.ResultsFolder;
 import sitcov.results.ResultsRows;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
@@ -185,6 +188,15 @@ final class ReplayCommand implements Command {
                 row = ResultsRows.find(folder, options.count("--replication", 0, Integer.MAX_VALUE).orElseThrow(),
                         options.value("--driver").orElseThrow(), options.count("--map", 0, Integer.MAX_VALUE).orElseThrow(),
                         oneFault(options, false));
+            }
+            if (!row.config().controller().equals(ExperimentConfig.BUILTIN)) {
+                // a replay runs the builtin car: another controller's runs are replayed through it
+                String map = row.map().map() instanceof MapId.Situation s
+                        ? "--load " + ResultsFolder.situation(folder, s.name()) : "--seed " + row.map().externalSeed();
+                throw new UsageException("replay: " + folder + " tested the controller " + row.config().controller()
+                        + ", and replay runs the builtin car; run its map with that controller: 'simulate " + map
+                        + " --internal-seed " + row.map().internalSeed() + " --controller \"" + row.config().controller()
+                        + "\" --png FILE'");
             }
             return new Case(ResultsRows.worldMap(folder, row.map()), row.map().internalSeed(), row.fault(),
                     row.config().faultyRuns(), Optional.of(row));

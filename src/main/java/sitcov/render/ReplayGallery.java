@@ -31,6 +31,10 @@ public final class ReplayGallery {
     }
 
     public static void write(Path folder, ExperimentConfig config, List<MapRun> inOrder) throws IOException {
+        if (!config.controller().equals(ExperimentConfig.BUILTIN)) {
+            // the pictures run the builtin car; a folder that tested another controller shows none
+            return;
+        }
         List<Fault> faults = config.faultList();
         List<Runnable> pictures = new ArrayList<>();
         for (int f = 0; f < faults.size(); f++) {

@@ -20,6 +20,22 @@ class RunWithAControllerTest {
     }
 
     @Test
+    void anExperimentOnAnotherControllerKeepsItInTheManifestDrawsNoBuiltinReplaysAndReplaySaysHowToRunIt(@TempDir Path dir)
+            throws Exception {
+        Path out = dir.resolve("planted");
+        CliRunner r = CliRunner.run("run", ResultsFolders.TINY, "--replications", "1", "--out", out.toString(),
+                "--controller", "builtin:16", "--threads", "1");
+        assertEquals(ExitCode.OK, r.exitCode(), r.err());
+        assertTrue(Files.readString(out.resolve("manifest.properties")).contains("controller=builtin:16\n"));
+        assertFalse(Files.exists(out.resolve("replays")) && Files.list(out.resolve("replays")).findAny().isPresent(),
+                "replay pictures run the builtin car, so a folder of another controller has none");
+        CliRunner replay = CliRunner.run("replay", out.toString(), "--row", "1");
+        assertEquals(ExitCode.USAGE, replay.exitCode());
+        assertTrue(replay.err().contains("--controller \"builtin:16\"") && replay.err().contains("simulate --seed "),
+                replay.err());
+    }
+
+    @Test
     void aControllerThatNamesNothingIsRefusedWithWhatIsAccepted(@TempDir Path dir) {
         CliRunner r = CliRunner.run("run", "smoke", "--out", dir.resolve("x").toString(), "--controller", "python3 me.py");
         assertEquals(ExitCode.USAGE, r.exitCode());

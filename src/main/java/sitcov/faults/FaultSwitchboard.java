@@ -17,14 +17,36 @@ public final class FaultSwitchboard {
 
     private final Set<Fault> active;
     private final LongSupplier clock;
-    private final boolean[] reached = new boolean[N];
-    private final long[] effectiveCount = new long[N];
-    private final long[] firstEffective = new long[N];
+    private final boolean[] reached;
+    private final long[] effectiveCount;
+    private final long[] firstEffective;
 
     public FaultSwitchboard(Set<Fault> active, LongSupplier clock) {
         this.active = active.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(active);
         this.clock = clock;
+        this.reached = new boolean[N];
+        this.effectiveCount = new long[N];
+        this.firstEffective = new long[N];
         java.util.Arrays.fill(firstEffective, -1);
+    }
+
+    private FaultSwitchboard(Set<Fault> active, FaultSwitchboard sharing) {
+        this.active = EnumSet.copyOf(active);
+        this.clock = sharing.clock;
+        this.reached = sharing.reached;
+        this.effectiveCount = sharing.effectiveCount;
+        this.firstEffective = sharing.firstEffective;
+    }
+
+    /**
+     * A board with {@code more} switched on as well that records into this one: a controller with
+     * faults planted in it acts on them, and what the run's own faults did is still this board's record.
+     */
+    public FaultSwitchboard alsoWith(Set<Fault> more) {
+        EnumSet<Fault> all = EnumSet.noneOf(Fault.class);
+        all.addAll(active);
+        all.addAll(more);
+        return new FaultSwitchboard(all, this);
     }
 
     /** A switchboard with every fault off. */

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.MapId;
 import sitcov.experiment.MapRun;
 import sitcov.judge.Notion;
 import sitcov.render.ReplayGallery;
@@ -29,13 +30,27 @@ final class ReportFaultMaps {
         return "java -jar \"$" + JAR + "\" replay . --row " + row + " --png replay-row-" + row + ".png";
     }
 
+    /**
+     * The command that runs row {@code row}'s faulty run again with the folder's controller, when that is
+     * not the builtin car (which {@code replay} runs): {@code simulate} with the map, seeds, fault and controller.
+     */
+    static String rerun(int row, MapRun run, int fault, String controller) {
+        String map = run.map() instanceof MapId.Situation s
+                ? "--load " + ResultsFolder.SITUATIONS + "/" + s.name() + ".situation" : "--seed " + run.externalSeed();
+        return "java -jar \"$" + JAR + "\" simulate " + map + " --internal-seed " + run.internalSeed() + " --faults " + fault
+                + " --controller \"" + controller + "\" --png run-row-" + row + ".png";
+    }
+
     static void append(StringBuilder h, Path folder, ExperimentConfig config, List<MapRun> inOrder, String version) {
+        boolean builtin = config.controller().equals(ExperimentConfig.BUILTIN);
         h.append("<h2>Maps that found each fault</h2><p class=\"muted\">Counts are of maps judged: every map each driver"
                 + " ran in each replication (runs.csv). Each command replays its row side by side, the run without the"
                 + " fault and the run with it, into a picture next to this page (add <code>--gif FILE</code> to watch"
                 + " them). Run it in a shell opened in this folder, once ").append(JAR).append(" names sitcov's jar: in"
                 + " the sitcov checkout, ").append(HtmlReport.command("mvn -q package -DskipTests && export " + JAR
-                + "=$PWD/target/sitcov-" + version + ".jar")).append("</p>");
+                + "=$PWD/target/sitcov-" + version + ".jar")).append(builtin ? "" : " This folder tested the controller "
+                + HtmlReport.esc(config.controller()) + ", not the builtin car that replay runs: each command runs the map"
+                + " with the fault through that controller into a picture instead.").append("</p>");
         var faults = config.faultList();
         int perMap = 1 + faults.size();
         for (int f = 0; f < faults.size(); f++) {
@@ -51,7 +66,8 @@ final class ReportFaultMaps {
                         found.add(String.format(Locale.ROOT, "<li>replication %d, %s, map %d (%s): %s, row %d of runs.csv"
                                 + "<br>%s</li>", run.replication(), HtmlReport.esc(run.driver()), run.mapIndex(),
                                 HtmlReport.esc(run.map().text()), outcome.newAccident().map(Enum::name).orElse("FOUND"), row,
-                                HtmlReport.command(replay(row))));
+                                HtmlReport.command(builtin ? replay(row)
+                                        : rerun(row, run, faults.get(f).id(), config.controller()))));
                     }
                 }
             }

@@ -87,15 +87,11 @@ public final class BuiltinCar implements Controller, Bodied {
 
     /**
      * The builtin car with {@code planted} always on, whatever the run switches on: a version of it
-     * with bugs, for comparing versions. What the planted faults do is recorded on a board of its own.
+     * with bugs, for comparing versions. What every fault does is recorded on the run's board.
      */
     public static ControllerFactory withPlanted(Set<Fault> planted) {
         Set<Fault> copy = Set.copyOf(planted);
-        return run -> {
-            java.util.EnumSet<Fault> on = java.util.EnumSet.copyOf(copy);
-            on.addAll(run.faults().activeFaults());
-            return new BuiltinCar(run.map(), new FaultSwitchboard(on, run.clock()), run.streams().stream(DECISIONS_STREAM));
-        };
+        return run -> new BuiltinCar(run.map(), run.faults().alsoWith(copy), run.streams().stream(DECISIONS_STREAM));
     }
 
     /** The builtin car for every worker thread (it holds no process or other resource). */

@@ -29,6 +29,9 @@ class RunWithAControllerTest {
         assertTrue(Files.readString(out.resolve("manifest.properties")).contains("controller=builtin:16\n"));
         assertFalse(Files.exists(out.resolve("replays")) && Files.list(out.resolve("replays")).findAny().isPresent(),
                 "replay pictures run the builtin car, so a folder of another controller has none");
+        String report = Files.readString(out.resolve("report.html"));
+        assertTrue(report.contains("<span>simulate</span>") && report.contains("<span>&quot;builtin:16&quot;</span>")
+                && !report.contains("<span>replay</span>"), "the report's commands run the folder's controller");
         CliRunner replay = CliRunner.run("replay", out.toString(), "--row", "1");
         assertEquals(ExitCode.USAGE, replay.exitCode());
         assertTrue(replay.err().contains("--controller \"builtin:16\"") && replay.err().contains("simulate --seed "),

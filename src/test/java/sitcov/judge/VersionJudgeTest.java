@@ -36,6 +36,20 @@ class VersionJudgeTest {
     }
 
     @Test
+    void aPlantedFaultActsAsTheSameFaultSwitchedOnAndTheRunsOwnFaultsAreStillRecorded() {
+        Fault planted = Fault.ofId(16);
+        Fault judged = Fault.ofId(14);
+        for (long seed = 1; seed <= 3; seed++) {
+            WorldMap map = MapGenerator.generate(seed);
+            RunRecord both = Simulator.run(map, seed, EnumSet.of(planted, judged), RunObserver.NONE);
+            RunRecord viaPlanted = Simulator.run(map, seed, EnumSet.of(judged), RunObserver.NONE,
+                    BuiltinCar.withPlanted(EnumSet.of(planted)));
+            assertEquals(both.result(), viaPlanted.result(), "map " + seed);
+            assertEquals(both.activations().get(judged.ordinal()), viaPlanted.activations().get(judged.ordinal()), "map " + seed);
+        }
+    }
+
+    @Test
     void theReferenceAgainstItselfNeverRegresses() {
         WorldMap map = MapGenerator.generate(3);
         VersionVerdict same = VersionJudge.judge(map, 3, BuiltinCar.FACTORY, List.of(BuiltinCar.FACTORY)).get(0);

@@ -31,6 +31,11 @@ final class Controllers {
 
     /** Starts what {@code spec} names, handshaking a program at once; its logs go into {@code folder}. */
     static ControllerSource open(String spec, Path folder) throws UsageException {
+        return open(spec, folder, "controller");
+    }
+
+    /** As {@link #open(String, Path)}, its logs named {@code LOGS-N.log}: several controllers share one folder. */
+    static ControllerSource open(String spec, Path folder, String logs) throws UsageException {
         ControllerChoice choice;
         try {
             choice = ControllerChoice.parse(spec);
@@ -47,7 +52,7 @@ final class Controllers {
         }
         AtomicInteger threads = new AtomicInteger();
         ThreadLocal<ControllerFactory> perThread = ThreadLocal.withInitial(() -> workers.worker(
-                choice instanceof ControllerChoice.Exec ? folder.resolve("controller-" + threads.incrementAndGet() + ".log")
+                choice instanceof ControllerChoice.Exec ? folder.resolve(logs + "-" + threads.incrementAndGet() + ".log")
                         : null));
         return new ControllerSource() {
             @Override

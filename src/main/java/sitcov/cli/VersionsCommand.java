@@ -57,16 +57,17 @@ final class VersionsCommand implements Command {
             throw new UsageException("versions: --out " + Options.shown(folder) + " exists and is not an empty folder;"
                     + " results never overwrite others: name a new folder.");
         }
-        try {
-            Files.createDirectories(folder);
-        } catch (IOException e) {
-            throw new UsageException("versions: cannot create " + folder + ": " + IoReason.of(e, folder) + ".");
-        }
         List<ControllerSource> sources = new ArrayList<>();
         try {
-            sources.add(Controllers.open(plan.reference(), folder));
-            for (String v : plan.variants()) {
-                sources.add(Controllers.open(v, folder));
+            // every controller is started and handshaken before the folder is made: one that cannot leaves nothing
+            sources.add(Controllers.open(plan.reference(), folder, "controller-reference"));
+            for (int v = 0; v < plan.variants().size(); v++) {
+                sources.add(Controllers.open(plan.variants().get(v), folder, "controller-variant-" + (v + 1)));
+            }
+            try {
+                Files.createDirectories(folder);
+            } catch (IOException e) {
+                throw new UsageException("versions: cannot create " + folder + ": " + IoReason.of(e, folder) + ".");
             }
             List<List<VersionVerdict>> judged = judge(plan, sources, threads);
             String csv = VersionsReport.csv(plan, judged);
@@ -119,7 +120,11 @@ final class VersionsCommand implements Command {
         if (options.positional().size() == 1) {
             String named = options.positional().get(0);
             Path shipped = Path.of("experiments", "controllers", named + ".properties");
-            Path file = Files.isRegularFile(shipped) ? shipped : Preset.locate(named);
+            Path file = Files.isRegularFile(shipped) ? shipped : Path.of(named);
+            if (!Files.isRegularFile(file)) {
+                throw new UsageException("versions: no preset '" + named + "': neither a file nor " + shipped
+                        + "; the shipped one is byo-controller, or give --reference and --variants.");
+            }
             try {
                 p.load(new java.io.StringReader(Files.readString(file, StandardCharsets.UTF_8)));
             } catch (IOException | IllegalArgumentException e) {

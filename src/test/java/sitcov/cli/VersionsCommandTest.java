@@ -29,6 +29,23 @@ class VersionsCommandTest {
     }
 
     @Test
+    void aControllerThatFailsItsHandshakeStopsVersionsBeforeAnyFolderIsMade(@TempDir Path dir) {
+        Path out = dir.resolve("never");
+        CliRunner r = CliRunner.run("versions", "--reference", "exec:sh -c 'exit 3'", "--variants", "builtin",
+                "--maps", "2", "--out", out.toString());
+        assertEquals(ExitCode.USAGE, r.exitCode(), r.err());
+        assertTrue(r.err().contains("failed the handshake"), r.err());
+        assertTrue(!Files.exists(out), "nothing is written for a controller that cannot start");
+    }
+
+    @Test
+    void aPresetThatDoesNotExistIsNamedWithTheShippedOne() {
+        CliRunner r = CliRunner.run("versions", "nosuch");
+        assertEquals(ExitCode.USAGE, r.exitCode());
+        assertTrue(r.err().contains("versions: no preset 'nosuch'") && r.err().contains("byo-controller"), r.err());
+    }
+
+    @Test
     void aVariantThatNamesNoControllerIsRefusedWithTheFix() {
         CliRunner r = CliRunner.run("versions", "--reference", "builtin", "--variants", "builtin:99", "--maps", "2");
         assertEquals(ExitCode.USAGE, r.exitCode());

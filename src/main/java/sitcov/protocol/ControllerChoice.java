@@ -34,21 +34,7 @@ public sealed interface ControllerChoice {
 
         @Override
         public Workers open(String sitcovVersion, long tickTimeoutMillis, long handshakeTimeoutMillis) {
-            return new Workers() {
-                @Override
-                public ControllerFactory worker(Path log) {
-                    return BuiltinCar.FACTORY;
-                }
-
-                @Override
-                public String check(Path log) {
-                    return "builtin";
-                }
-
-                @Override
-                public void close() {
-                }
-            };
+            return inProcess(BuiltinCar.FACTORY, text());
         }
     }
 
@@ -65,22 +51,7 @@ public sealed interface ControllerChoice {
 
         @Override
         public Workers open(String sitcovVersion, long tickTimeoutMillis, long handshakeTimeoutMillis) {
-            ControllerFactory planted = BuiltinCar.withPlanted(faults);
-            return new Workers() {
-                @Override
-                public ControllerFactory worker(Path log) {
-                    return planted;
-                }
-
-                @Override
-                public String check(Path log) {
-                    return text();
-                }
-
-                @Override
-                public void close() {
-                }
-            };
+            return inProcess(BuiltinCar.withPlanted(faults), text());
         }
     }
 
@@ -116,6 +87,25 @@ public sealed interface ControllerChoice {
                 }
             };
         }
+    }
+
+    /** Controllers that run in sitcov's process: one factory for every thread, no program to start or end. */
+    private static Workers inProcess(ControllerFactory factory, String name) {
+        return new Workers() {
+            @Override
+            public ControllerFactory worker(Path log) {
+                return factory;
+            }
+
+            @Override
+            public String check(Path log) {
+                return name;
+            }
+
+            @Override
+            public void close() {
+            }
+        };
     }
 
     /** The controllers of one command: a factory per worker thread. */

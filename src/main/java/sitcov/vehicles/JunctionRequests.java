@@ -11,16 +11,10 @@ import sitcov.control.RightOfWay;
 final class JunctionRequests {
     private RightOfWay signals;
     private Command out;
-    private int[] claimed = new int[4];
-    private int claimedCount;
-    private int[] released = new int[4];
-    private int releasedCount;
 
     void startTick(RightOfWay signals, Command out) {
         this.signals = signals;
         this.out = out;
-        claimedCount = 0;
-        releasedCount = 0;
     }
 
     /** Asks for {@code junction}: true (and asked in the command) when the signal showed it would be granted. */
@@ -30,39 +24,30 @@ final class JunctionRequests {
             return false;
         }
         out.claim(junction);
-        claimed = add(claimed, claimedCount++, junction);
         return true;
     }
 
     void release(int junction) {
-        if (junction < 0) {
-            return;
+        if (junction >= 0) {
+            out.release(junction);
         }
-        out.release(junction);
-        released = add(released, releasedCount++, junction);
     }
 
+    /** Whether the car holds {@code junction} now: asked for this tick, or held and not let go of since. */
     boolean isHeld(int junction) {
-        return contains(claimed, claimedCount, junction)
-                || (signals.holds(junction) && !wasReleased(junction));
-    }
-
-    private boolean wasReleased(int junction) {
-        return contains(released, releasedCount, junction);
-    }
-
-    private static boolean contains(int[] list, int count, int value) {
-        for (int i = 0; i < count; i++) {
-            if (list[i] == value) {
+        for (int i = 0; i < out.claimCount(); i++) {
+            if (out.claimAt(i) == junction) {
                 return true;
             }
         }
-        return false;
-    }
-
-    private static int[] add(int[] list, int at, int value) {
-        int[] grown = at < list.length ? list : java.util.Arrays.copyOf(list, 2 * list.length);
-        grown[at] = value;
-        return grown;
+        if (!signals.holds(junction)) {
+            return false;
+        }
+        for (int i = 0; i < out.releaseCount(); i++) {
+            if (out.releaseAt(i) == junction) {
+                return false;
+            }
+        }
+        return true;
     }
 }

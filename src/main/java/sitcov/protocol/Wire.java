@@ -34,8 +34,6 @@ final class Wire {
     static final List<String> SENSORS = List.of("radar", "obstacles", "camera", "lidar");
     /** What a controller that says nothing of sensors gets: the objects its sensors report, no raw hits. */
     static final List<String> DEFAULT_SENSORS = List.of("radar", "obstacles");
-    /** A tick's length: the top speed of 2.5 m a tick is 45 km/h. */
-    static final double TICK_SECONDS = 0.2;
 
     private Wire() {
     }
@@ -60,7 +58,7 @@ final class Wire {
         }
         w.endArray();
         w.name("limits").beginObject().member("max_speed", Dynamics.MAX_SPEED).member("max_turn", Dynamics.MAX_TURN)
-                .member("tick_seconds", TICK_SECONDS).member("sensor_range", Observation.SENSOR_RANGE)
+                .member("tick_seconds", sitcov.world.Dimensions.TICK_SECONDS).member("sensor_range", Observation.SENSOR_RANGE)
                 .endObject();
         w.endObject();
     }

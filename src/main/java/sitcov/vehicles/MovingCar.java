@@ -41,7 +41,7 @@ public final class MovingCar implements Bodied, Steppable {
      */
     static final int GIVE_UP = 50;
     /** Its rear axle, which it turns about, is this far behind its front. */
-    static final double REAR_AXLE = 3.5;
+    public static final double REAR_AXLE = 3.5;
 
     private final int id;
     private final Scene scene;

@@ -8,8 +8,8 @@ import sitcov.world.Target;
  * the oracle judges"). The builtin car used to end the run itself, once it also believed the Target
  * to be in its lane; the world cannot take a controller's word for that.
  */
-final class TargetArrival {
-    static final double CAPTURE_DISTANCE = 1.5;
+public final class TargetArrival {
+    public static final double CAPTURE_DISTANCE = 1.5;
 
     private final Target target;
 

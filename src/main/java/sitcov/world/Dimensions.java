@@ -1,10 +1,12 @@
 package sitcov.world;
 
 /**
- * The world's fixed measures, in metres (README, "Maps and situation files", and "The car under test, the
+ * The world's fixed measures, in metres and seconds (README, "Maps and situation files", and "The car under test, the
  * traffic and the oracle").
  */
 public final class Dimensions {
+    /** A tick's length: the car's top speed of 2.5 m a tick is 45 km/h. */
+    public static final double TICK_SECONDS = 0.2;
     public static final double WORLD_WIDTH = 200;
     public static final double WORLD_HEIGHT = 100;
     public static final double ROAD_WIDTH = 6;

@@ -1,0 +1,121 @@
+package sitcov.export;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import sitcov.control.Vehicle;
+import sitcov.faults.Fault;
+import sitcov.geom.Bearing;
+import sitcov.judge.RunObserver;
+import sitcov.judge.Simulator;
+import sitcov.oracle.AccidentDetector;
+import sitcov.oracle.RunResult;
+import sitcov.vehicles.Telemetry;
+import sitcov.world.Dimensions;
+import sitcov.world.StartPose;
+import sitcov.world.WorldMap;
+
+/**
+ * One run of the builtin car, every vehicle's pose at every tick: what a player needs to replay
+ * exactly what happened. A track's sample 0 is the start (time 0 s); sample {@code t + 1} is the
+ * state after tick {@code t}. Parked cars never move, so the map holds them.
+ *
+ * @param tracks the car under test first, then every moving car in the order of the map's moving cars
+ */
+public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, RunResult result, List<Track> tracks) {
+    public RunRecording {
+        faults = Set.copyOf(faults);
+        tracks = List.copyOf(tracks);
+    }
+
+    /** A vehicle's front-centre pose (as sitcov anchors vehicles) and whether it was on the map. */
+    public record Sample(double x, double y, double bearing, boolean active) {
+    }
+
+    /**
+     * One vehicle's poses, tick by tick.
+     *
+     * @param sitcovId the vehicle's id in the run (the car under test is 0), as accidents name their other party
+     */
+    public record Track(String entity, int sitcovId, double length, double width, List<Sample> samples) {
+        public Track {
+            samples = List.copyOf(samples);
+        }
+    }
+
+    /** The name the car under test has in an exported scenario. */
+    public static final String EGO = "ego";
+
+    /** Runs the builtin car with {@code faults} on {@code map} to its end, recording every vehicle. */
+    public static RunRecording of(WorldMap map, long internalSeed, Set<Fault> faults) {
+        Recorder recorder = new Recorder(map);
+        RunResult result = Simulator.run(map, internalSeed, faults, recorder).result();
+        List<Track> tracks = new ArrayList<>();
+        for (int i = 0; i < recorder.samples.size(); i++) {
+            tracks.add(new Track(i == 0 ? EGO : movingName(i - 1), recorder.ids[i], recorder.lengths[i],
+                    recorder.widths[i], recorder.samples.get(i)));
+        }
+        return new RunRecording(map, internalSeed, faults, result, tracks);
+    }
+
+    /** The name of the moving car at {@code index} of the map's moving cars. */
+    static String movingName(int index) {
+        return "moving" + index;
+    }
+
+    static String parkedName(int id) {
+        return "parked" + id;
+    }
+
+    /** Collects the samples; the first tick also tells each vehicle's id and size. */
+    private static final class Recorder implements RunObserver {
+        private final List<List<Sample>> samples = new ArrayList<>();
+        private final int[] ids;
+        private final double[] lengths;
+        private final double[] widths;
+
+        Recorder(WorldMap map) {
+            StartPose car = map.layout().carStart().orElseThrow(() ->
+                    new IllegalArgumentException("map " + map.seed() + " has no start for the car, so no run"));
+            int vehicles = 1 + map.movingCars().size();
+            ids = new int[vehicles];
+            lengths = new double[vehicles];
+            widths = new double[vehicles];
+            samples.add(new ArrayList<>(List.of(start(car))));
+            for (StartPose p : map.movingCars()) {
+                samples.add(new ArrayList<>(List.of(start(p))));
+            }
+        }
+
+        private static Sample start(StartPose p) {
+            return new Sample(p.position().x(), p.position().y(), p.heading().bearing(), true);
+        }
+
+        @Override
+        public void afterTick(long tick, Telemetry run, AccidentDetector detector) {
+            keep(0, run.car());
+            List<? extends Vehicle> moving = run.movingCars();
+            for (int i = 0; i < moving.size(); i++) {
+                keep(i + 1, moving.get(i));
+            }
+        }
+
+        private void keep(int track, Vehicle v) {
+            ids[track] = v.id();
+            lengths[track] = v.length();
+            widths[track] = v.width();
+            samples.get(track).add(new Sample(v.x(), v.y(), v.heading(), v.isActive()));
+        }
+    }
+
+    /** The centre of a footprint anchored at its front centre: where the ASAM formats put a vehicle. */
+    static double[] centre(double x, double y, double bearing, double length) {
+        double half = length / 2;
+        return new double[] {x - Bearing.dx(bearing) * half, y - Bearing.dy(bearing) * half};
+    }
+
+    /** How long the recorded run lasted. */
+    double seconds() {
+        return (tracks.get(0).samples().size() - 1) * Dimensions.TICK_SECONDS;
+    }
+}

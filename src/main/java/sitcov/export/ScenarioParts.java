@@ -1,0 +1,145 @@
+package sitcov.export;
+
+import java.util.List;
+import sitcov.vehicles.AutonomousCar;
+import sitcov.vehicles.Dynamics;
+import sitcov.vehicles.MovingCar;
+import sitcov.vehicles.TargetArrival;
+import sitcov.world.Dimensions;
+import sitcov.world.Target;
+
+/**
+ * The pieces every exported OpenSCENARIO document shares: its header, road network, vehicles,
+ * positions, triggers and the stop at the Target. Each vehicle's position is the centre of its
+ * footprint, its bounding box centred there.
+ */
+final class ScenarioParts {
+    /** Exports carry no clock time, so that the same map gives the same bytes; the header needs a date. */
+    static final String FIXED_DATE = "2026-01-01T00:00:00";
+    private static final double TICK = Dimensions.TICK_SECONDS;
+
+    private ScenarioParts() {
+    }
+
+    /** A kind of vehicle: its size, and its rear axle (which it turns about) behind its front. */
+    record Kind(String description, double length, double width, double rearAxleBehindFront) {
+        static final Kind CAR_UNDER_TEST = new Kind("sitcov car under test", Dimensions.AUTONOMOUS_CAR_LENGTH,
+                Dimensions.AUTONOMOUS_CAR_WIDTH, AutonomousCar.REAR_AXLE);
+        static final Kind PARKED = new Kind("parked car", Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH, MovingCar.REAR_AXLE);
+        static final Kind MOVING = new Kind("moving car", Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH, MovingCar.REAR_AXLE);
+    }
+
+    static void header(Xml xml, ScenarioVersion version, String description) {
+        xml.empty("FileHeader", "revMajor", "1", "revMinor", Integer.toString(version.minor()), "date", FIXED_DATE,
+                "description", description, "author", "sitcov");
+    }
+
+    /** Parameters, catalogs and the road network, in the order the schema wants them. */
+    static void context(Xml xml, List<String[]> parameters, String roadFile) {
+        if (!parameters.isEmpty()) {
+            xml.open("ParameterDeclarations");
+            for (String[] p : parameters) {
+                xml.empty("ParameterDeclaration", "name", p[0], "parameterType", p[1], "value", p[2]);
+            }
+            xml.close();
+        }
+        xml.empty("CatalogLocations");
+        xml.open("RoadNetwork");
+        xml.empty("LogicFile", "filepath", roadFile);
+        xml.close();
+    }
+
+    static void vehicle(Xml xml, String entity, Kind kind) {
+        double halfLength = kind.length() / 2;
+        xml.open("ScenarioObject", "name", entity);
+        xml.open("Vehicle", "name", kind.description(), "vehicleCategory", "car");
+        xml.open("BoundingBox");
+        xml.empty("Center", "x", Xml.metres(0), "y", Xml.metres(0), "z", Xml.metres(0.75));
+        xml.empty("Dimensions", "width", Xml.metres(kind.width()), "length", Xml.metres(kind.length()),
+                "height", Xml.metres(1.5));
+        xml.close();
+        // sitcov's limits in the formats' units: metres a tick become metres a second
+        xml.empty("Performance", "maxSpeed", Xml.metres(Dynamics.MAX_SPEED / TICK),
+                "maxAcceleration", Xml.metres(Dynamics.ACCELERATION / TICK / TICK),
+                "maxDeceleration", Xml.metres(Dynamics.BRAKING / TICK / TICK));
+        xml.open("Axles");
+        double rear = halfLength - kind.rearAxleBehindFront();
+        axle(xml, "FrontAxle", Math.min(halfLength - 0.3, rear + 2.5));
+        axle(xml, "RearAxle", rear);
+        xml.close();
+        xml.empty("Properties");
+        xml.close().close();
+    }
+
+    private static void axle(Xml xml, String which, double positionX) {
+        xml.empty(which, "maxSteering", Xml.fine(Math.toRadians(Dynamics.MAX_TURN)), "wheelDiameter", Xml.metres(0.6),
+                "trackWidth", Xml.metres(1.6), "positionX", Xml.metres(positionX), "positionZ", Xml.metres(0.3));
+    }
+
+    /** A world position from a sitcov front-centre pose of a vehicle {@code length} long. */
+    static void frontPose(Xml xml, double x, double y, double bearing, double length) {
+        double[] centre = RunRecording.centre(x, y, bearing, length);
+        centrePose(xml, centre[0], centre[1], bearing);
+    }
+
+    static void centrePose(Xml xml, double x, double y, double bearing) {
+        xml.open("Position");
+        xml.empty("WorldPosition", "x", Xml.metres(AsamFrame.x(x)), "y", Xml.metres(AsamFrame.y(y)), "z", Xml.metres(0),
+                "h", Xml.fine(AsamFrame.heading(bearing)));
+        xml.close();
+    }
+
+    static void targetPosition(Xml xml, Target target) {
+        xml.open("Position");
+        xml.empty("WorldPosition", "x", Xml.metres(AsamFrame.x(target.position().x())),
+                "y", Xml.metres(AsamFrame.y(target.position().y())), "z", Xml.metres(0));
+        xml.close();
+    }
+
+    static void speed(Xml xml, double metresPerSecond, String shape, String dimension, double value) {
+        xml.open("PrivateAction").open("LongitudinalAction").open("SpeedAction");
+        xml.empty("SpeedActionDynamics", "dynamicsShape", shape, "value", Xml.metres(value), "dynamicsDimension", dimension);
+        xml.open("SpeedActionTarget");
+        xml.empty("AbsoluteTargetSpeed", "value", Xml.metres(metresPerSecond));
+        xml.close().close().close().close();
+    }
+
+    /** A trigger that fires once the simulation time passes {@code seconds}. */
+    static void timeTrigger(Xml xml, String element, String name, double seconds) {
+        xml.open(element).open("ConditionGroup");
+        timeCondition(xml, name, seconds);
+        xml.close().close();
+    }
+
+    static void timeCondition(Xml xml, String name, double seconds) {
+        xml.open("Condition", "name", name, "delay", "0", "conditionEdge", "rising");
+        xml.open("ByValueCondition");
+        xml.empty("SimulationTimeCondition", "value", Xml.fine(seconds), "rule", "greaterThan");
+        xml.close().close();
+    }
+
+    /**
+     * The storyboard's stop: the car under test on the Target (its front within sitcov's capture
+     * distance; a player measures from its reference point, so the tolerance allows for the half
+     * length between them), or else the time limit.
+     */
+    static void stopAtTargetOrTimeout(Xml xml, Target target, double timeoutSeconds) {
+        xml.open("StopTrigger");
+        xml.open("ConditionGroup");
+        xml.open("Condition", "name", "the car under test reaches the Target", "delay", "0", "conditionEdge", "rising");
+        xml.open("ByEntityCondition");
+        xml.open("TriggeringEntities", "triggeringEntitiesRule", "any");
+        xml.empty("EntityRef", "entityRef", RunRecording.EGO);
+        xml.close();
+        xml.open("EntityCondition");
+        xml.open("ReachPositionCondition", "tolerance",
+                Xml.metres(TargetArrival.CAPTURE_DISTANCE + Dimensions.AUTONOMOUS_CAR_LENGTH / 2));
+        targetPosition(xml, target);
+        xml.close().close().close().close();
+        xml.close();
+        xml.open("ConditionGroup");
+        timeCondition(xml, "time limit", timeoutSeconds);
+        xml.close();
+        xml.close();
+    }
+}

@@ -1,0 +1,103 @@
+package sitcov.export;
+
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.Locale;
+
+/**
+ * A small XML writer: elements with attributes given as name–value pairs, indented two spaces,
+ * text escaped. Numbers are written with a fixed number of decimals in the root locale, so a
+ * document is the same bytes on every machine.
+ */
+final class Xml {
+    private final StringBuilder text = new StringBuilder(4096);
+    private final Deque<String> open = new ArrayDeque<>();
+
+    Xml() {
+        text.append("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    }
+
+    Xml open(String name, String... attributes) {
+        start(name, attributes);
+        text.append(">\n");
+        open.push(name);
+        return this;
+    }
+
+    Xml empty(String name, String... attributes) {
+        start(name, attributes);
+        text.append("/>\n");
+        return this;
+    }
+
+    Xml close() {
+        String name = open.pop();
+        indent();
+        text.append("</").append(name).append(">\n");
+        return this;
+    }
+
+    Xml comment(String words) {
+        indent();
+        text.append("<!-- ").append(escape(words.replace("--", "- -"))).append(" -->\n");
+        return this;
+    }
+
+    String document() {
+        if (!open.isEmpty()) {
+            throw new IllegalStateException("elements left open: " + open);
+        }
+        return text.toString();
+    }
+
+    private void start(String name, String[] attributes) {
+        if (attributes.length % 2 != 0) {
+            throw new IllegalArgumentException("attributes of " + name + " come in name-value pairs");
+        }
+        indent();
+        text.append('<').append(name);
+        for (int i = 0; i < attributes.length; i += 2) {
+            text.append(' ').append(attributes[i]).append("=\"").append(escape(attributes[i + 1])).append('"');
+        }
+    }
+
+    private void indent() {
+        text.append("  ".repeat(open.size()));
+    }
+
+    static String escape(String s) {
+        StringBuilder out = new StringBuilder(s.length());
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            switch (c) {
+                case '&' -> out.append("&amp;");
+                case '<' -> out.append("&lt;");
+                case '>' -> out.append("&gt;");
+                case '"' -> out.append("&quot;");
+                case '\n' -> out.append("&#10;");
+                default -> out.append(c);
+            }
+        }
+        return out.toString();
+    }
+
+    /** A length or coordinate in metres: to a tenth of a millimetre. */
+    static String metres(double v) {
+        return fixed(v, 4);
+    }
+
+    /** An angle or curvature: to a millionth, far below a millimetre over a car's length. */
+    static String fine(double v) {
+        return fixed(v, 9);
+    }
+
+    static String fixed(double v, int decimals) {
+        String s = String.format(Locale.ROOT, "%." + decimals + "f", v);
+        // no "-0.0000": the same value always reads the same
+        return s.charAt(0) == '-' && Double.parseDouble(s) == 0 ? s.substring(1) : s;
+    }
+
+    static String integer(long v) {
+        return Long.toString(v);
+    }
+}

@@ -19,12 +19,12 @@ import sitcov.geom.Vec2;
 record OpenDriveModel(Map<String, Road> roads, Map<String, Junction> junctions) {
 
     static OpenDriveModel parse(String xml) {
-        Element root = Xml.parse(xml);
+        Element root = Dom.parse(xml);
         if (!root.getTagName().equals("OpenDRIVE")) {
             throw new AssertionError("the root element is <" + root.getTagName() + ">, not <OpenDRIVE>");
         }
-        List<Road> roads = Xml.children(root, "road").stream().map(OpenDriveModel::road).toList();
-        List<Junction> junctions = Xml.children(root, "junction").stream().map(OpenDriveModel::junction).toList();
+        List<Road> roads = Dom.children(root, "road").stream().map(OpenDriveModel::road).toList();
+        List<Junction> junctions = Dom.children(root, "junction").stream().map(OpenDriveModel::junction).toList();
         return new OpenDriveModel(byId(roads, Road::id), byId(junctions, Junction::id));
     }
 
@@ -181,66 +181,66 @@ record OpenDriveModel(Map<String, Road> roads, Map<String, Junction> junctions) 
     }
 
     private static Road road(Element e) {
-        Optional<Element> link = Xml.optionalChild(e, "link");
-        List<Geometry> geometry = Xml.children(Xml.child(e, "planView"), "geometry").stream()
+        Optional<Element> link = Dom.optionalChild(e, "link");
+        List<Geometry> geometry = Dom.children(Dom.child(e, "planView"), "geometry").stream()
                 .map(OpenDriveModel::geometry).toList();
         if (geometry.isEmpty()) {
             throw new AssertionError("road " + e.getAttribute("id") + " has no geometry");
         }
-        Element lanes = Xml.child(e, "lanes");
-        List<Element> sections = Xml.children(lanes, "laneSection");
+        Element lanes = Dom.child(e, "lanes");
+        List<Element> sections = Dom.children(lanes, "laneSection");
         if (sections.size() != 1) {
             // the conventions give every road one lane section; reading more would only hide a difference
             throw new AssertionError("road " + e.getAttribute("id") + " has " + sections.size() + " lane sections, expected 1");
         }
         List<Lane> laneList = new ArrayList<>();
         for (String side : List.of("left", "right")) {
-            Xml.optionalChild(sections.get(0), side).ifPresent(s ->
-                    Xml.children(s, "lane").forEach(l -> laneList.add(lane(l))));
+            Dom.optionalChild(sections.get(0), side).ifPresent(s ->
+                    Dom.children(s, "lane").forEach(l -> laneList.add(lane(l))));
         }
-        return new Road(Xml.text(e, "id"), Xml.text(e, "junction"), Xml.number(e, "length"),
+        return new Road(Dom.text(e, "id"), Dom.text(e, "junction"), Dom.number(e, "length"),
                 e.getAttribute("rule").equals("LHT"),
-                link.flatMap(l -> Xml.optionalChild(l, "predecessor")).map(OpenDriveModel::link),
-                link.flatMap(l -> Xml.optionalChild(l, "successor")).map(OpenDriveModel::link),
-                geometry, Xml.children(lanes, "laneOffset").stream().map(OpenDriveModel::offset).toList(), laneList);
+                link.flatMap(l -> Dom.optionalChild(l, "predecessor")).map(OpenDriveModel::link),
+                link.flatMap(l -> Dom.optionalChild(l, "successor")).map(OpenDriveModel::link),
+                geometry, Dom.children(lanes, "laneOffset").stream().map(OpenDriveModel::offset).toList(), laneList);
     }
 
     private static Geometry geometry(Element g) {
-        Optional<Element> line = Xml.optionalChild(g, "line");
-        Optional<Element> arc = Xml.optionalChild(g, "arc");
+        Optional<Element> line = Dom.optionalChild(g, "line");
+        Optional<Element> arc = Dom.optionalChild(g, "arc");
         if (line.isPresent() == arc.isPresent()) {
             throw new AssertionError("a <geometry> at s=" + g.getAttribute("s") + " is neither one <line> nor one <arc>");
         }
-        return new Geometry(Xml.number(g, "s"), Xml.number(g, "x"), Xml.number(g, "y"), Xml.number(g, "hdg"),
-                Xml.number(g, "length"), line.isPresent() ? "line" : "arc",
-                arc.map(a -> Xml.number(a, "curvature")).orElse(0.0));
+        return new Geometry(Dom.number(g, "s"), Dom.number(g, "x"), Dom.number(g, "y"), Dom.number(g, "hdg"),
+                Dom.number(g, "length"), line.isPresent() ? "line" : "arc",
+                arc.map(a -> Dom.number(a, "curvature")).orElse(0.0));
     }
 
     private static Lane lane(Element l) {
-        Optional<Element> link = Xml.optionalChild(l, "link");
-        return new Lane(Integer.parseInt(Xml.text(l, "id")), l.getAttribute("type"),
-                link.flatMap(k -> Xml.optionalChild(k, "predecessor")).map(p -> Integer.parseInt(Xml.text(p, "id"))),
-                link.flatMap(k -> Xml.optionalChild(k, "successor")).map(p -> Integer.parseInt(Xml.text(p, "id"))),
-                Xml.children(l, "width").stream().map(OpenDriveModel::offset).toList());
+        Optional<Element> link = Dom.optionalChild(l, "link");
+        return new Lane(Integer.parseInt(Dom.text(l, "id")), l.getAttribute("type"),
+                link.flatMap(k -> Dom.optionalChild(k, "predecessor")).map(p -> Integer.parseInt(Dom.text(p, "id"))),
+                link.flatMap(k -> Dom.optionalChild(k, "successor")).map(p -> Integer.parseInt(Dom.text(p, "id"))),
+                Dom.children(l, "width").stream().map(OpenDriveModel::offset).toList());
     }
 
     private static Offset offset(Element w) {
-        return new Offset(Xml.number(w, w.hasAttribute("sOffset") ? "sOffset" : "s"), Xml.number(w, "a"),
-                Xml.number(w, "b"), Xml.number(w, "c"), Xml.number(w, "d"));
+        return new Offset(Dom.number(w, w.hasAttribute("sOffset") ? "sOffset" : "s"), Dom.number(w, "a"),
+                Dom.number(w, "b"), Dom.number(w, "c"), Dom.number(w, "d"));
     }
 
     private static Link link(Element l) {
-        return new Link(Xml.text(l, "elementType"), Xml.text(l, "elementId"),
+        return new Link(Dom.text(l, "elementType"), Dom.text(l, "elementId"),
                 l.hasAttribute("contactPoint") ? Optional.of(l.getAttribute("contactPoint")) : Optional.empty());
     }
 
     private static Junction junction(Element j) {
-        List<Connection> connections = Xml.children(j, "connection").stream().map(c -> new Connection(
-                Xml.text(c, "id"), Xml.text(c, "incomingRoad"), Xml.text(c, "connectingRoad"), Xml.text(c, "contactPoint"),
-                Xml.children(c, "laneLink").stream()
-                        .map(k -> new int[] {Integer.parseInt(Xml.text(k, "from")), Integer.parseInt(Xml.text(k, "to"))})
+        List<Connection> connections = Dom.children(j, "connection").stream().map(c -> new Connection(
+                Dom.text(c, "id"), Dom.text(c, "incomingRoad"), Dom.text(c, "connectingRoad"), Dom.text(c, "contactPoint"),
+                Dom.children(c, "laneLink").stream()
+                        .map(k -> new int[] {Integer.parseInt(Dom.text(k, "from")), Integer.parseInt(Dom.text(k, "to"))})
                         .toList())).toList();
-        return new Junction(Xml.text(j, "id"), connections);
+        return new Junction(Dom.text(j, "id"), connections);
     }
 
     private static <T> Map<String, T> byId(List<T> items, Function<T, String> id) {

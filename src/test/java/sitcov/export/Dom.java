@@ -16,8 +16,8 @@ import org.xml.sax.InputSource;
 import org.xml.sax.SAXException;
 
 /** Reading an exported document with the JDK's DOM parser, failing with the element's name when something is missing. */
-final class Xml {
-    private Xml() {
+final class Dom {
+    private Dom() {
     }
 
     static Element parse(String xml) {

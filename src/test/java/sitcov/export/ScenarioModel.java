@@ -1,0 +1,125 @@
+package sitcov.export;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import org.w3c.dom.Element;
+
+/**
+ * An OpenSCENARIO document read back with the DOM parser: what the tests compare with sitcov — the header's
+ * version, the road file, each entity's bounding box, its Init position and speed, the timed trajectory it follows
+ * (vertex times through the trajectory's Timing when it has one), the positions the ego is sent to, the
+ * parameters, and the trigger times of the events of each named maneuver.
+ */
+record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, Box> entities,
+                     Map<String, Pose> initial, Map<String, Double> initialSpeed, Map<String, List<Pose>> trajectories,
+                     List<Pose> acquiredPositions, List<Pose> reachConditions, Map<String, String> parameters,
+                     Map<String, List<Double>> eventTimes) {
+
+    /** A WorldPosition, and the time of its vertex when it is one (NaN otherwise). */
+    record Pose(double time, double x, double y, double h) {
+    }
+
+    record Box(double centreX, double centreY, double length, double width) {
+    }
+
+    static ScenarioModel parse(String xml) {
+        Element root = Dom.parse(xml);
+        if (!root.getTagName().equals("OpenSCENARIO")) {
+            throw new AssertionError("the root element is <" + root.getTagName() + ">, not <OpenSCENARIO>");
+        }
+        Element header = Dom.child(root, "FileHeader");
+        Element logic = Dom.child(Dom.child(root, "RoadNetwork"), "LogicFile");
+        Map<String, Box> entities = new LinkedHashMap<>();
+        for (Element o : Dom.children(Dom.child(root, "Entities"), "ScenarioObject")) {
+            Element box = Dom.child(Dom.child(o, "Vehicle"), "BoundingBox");
+            Element c = Dom.child(box, "Center");
+            Element d = Dom.child(box, "Dimensions");
+            put(entities, Dom.text(o, "name"), new Box(Dom.number(c, "x"), Dom.number(c, "y"),
+                    Dom.number(d, "length"), Dom.number(d, "width")));
+        }
+        Element storyboard = Dom.child(root, "Storyboard");
+        Map<String, Pose> initial = new LinkedHashMap<>();
+        Map<String, Double> speeds = new LinkedHashMap<>();
+        for (Element p : Dom.children(Dom.child(Dom.child(storyboard, "Init"), "Actions"), "Private")) {
+            String entity = Dom.text(p, "entityRef");
+            for (Element t : Dom.descendants(p, "TeleportAction")) {
+                put(initial, entity, pose(Dom.child(Dom.child(t, "Position"), "WorldPosition"), Double.NaN));
+            }
+            for (Element s : Dom.descendants(p, "AbsoluteTargetSpeed")) {
+                put(speeds, entity, Dom.number(s, "value"));
+            }
+        }
+        Map<String, List<Pose>> trajectories = new LinkedHashMap<>();
+        for (Element follow : Dom.descendants(storyboard, "FollowTrajectoryAction")) {
+            put(trajectories, actor(follow), vertices(follow));
+        }
+        Map<String, String> parameters = new LinkedHashMap<>();
+        Dom.optionalChild(root, "ParameterDeclarations").ifPresent(ps -> Dom.children(ps, "ParameterDeclaration")
+                .forEach(p -> put(parameters, Dom.text(p, "name"), Dom.text(p, "value"))));
+        Map<String, List<Double>> eventTimes = new LinkedHashMap<>();
+        for (Element maneuver : Dom.descendants(storyboard, "Maneuver")) {
+            List<Double> times = new ArrayList<>();
+            for (Element event : Dom.children(maneuver, "Event")) {
+                Dom.descendants(Dom.child(event, "StartTrigger"), "SimulationTimeCondition")
+                        .forEach(c -> times.add(Dom.number(c, "value")));
+            }
+            put(eventTimes, Dom.text(maneuver, "name"), times);
+        }
+        return new ScenarioModel((int) Dom.number(header, "revMajor"), (int) Dom.number(header, "revMinor"),
+                Dom.text(logic, "filepath"), entities, initial, speeds, trajectories,
+                positionsIn(storyboard, "AcquirePositionAction"), positionsIn(storyboard, "ReachPositionCondition"),
+                parameters, eventTimes);
+    }
+
+    /** The entity a trajectory moves: its Private's, or its ManeuverGroup's one actor. */
+    private static String actor(Element follow) {
+        Optional<Element> init = Dom.ancestor(follow, "Private");
+        if (init.isPresent()) {
+            return Dom.text(init.get(), "entityRef");
+        }
+        Element group = Dom.ancestor(follow, "ManeuverGroup")
+                .orElseThrow(() -> new AssertionError("a FollowTrajectoryAction belongs to no entity"));
+        List<Element> refs = Dom.children(Dom.child(group, "Actors"), "EntityRef");
+        if (refs.size() != 1) {
+            throw new AssertionError(Dom.describe(group) + " has " + refs.size() + " actors, expected the one that follows its trajectory");
+        }
+        return Dom.text(refs.get(0), "entityRef");
+    }
+
+    /** The trajectory's vertices, their times made absolute by its Timing (1.1 on; 1.0 has none and means them as given). */
+    private static List<Pose> vertices(Element follow) {
+        double scale = 1;
+        double offset = 0;
+        List<Element> timing = Dom.descendants(follow, "Timing");
+        if (!timing.isEmpty()) {
+            scale = Dom.number(timing.get(0), "scale");
+            offset = Dom.number(timing.get(0), "offset");
+        }
+        List<Pose> out = new ArrayList<>();
+        for (Element v : Dom.descendants(follow, "Vertex")) {
+            out.add(pose(Dom.child(Dom.child(v, "Position"), "WorldPosition"), Dom.number(v, "time") * scale + offset));
+        }
+        return out;
+    }
+
+    private static List<Pose> positionsIn(Element root, String tag) {
+        List<Pose> out = new ArrayList<>();
+        for (Element e : Dom.descendants(root, tag)) {
+            out.add(pose(Dom.child(Dom.child(e, "Position"), "WorldPosition"), Double.NaN));
+        }
+        return out;
+    }
+
+    private static Pose pose(Element w, double time) {
+        return new Pose(time, Dom.number(w, "x"), Dom.number(w, "y"), Dom.number(w, "h", 0));
+    }
+
+    private static <T> void put(Map<String, T> map, String key, T value) {
+        if (map.put(key, value) != null) {
+            throw new AssertionError("\"" + key + "\" is given twice");
+        }
+    }
+}

@@ -168,6 +168,9 @@ class OpenDriveRoundTripTest {
         List<String> lanes = new ArrayList<>();
         String wrongWay = null;
         for (Road piece : model.pieces()) {
+            if (!near(piece, q)) {
+                continue;
+            }
             for (OpenDriveModel.Geometry g : piece.geometry()) {
                 double[] st = g.locate(q);
                 if (st[0] < -METRE_TOLERANCE || st[0] > g.length() + METRE_TOLERANCE) {
@@ -197,6 +200,15 @@ class OpenDriveRoundTripTest {
             return "the centres of " + lanes.size() + " lanes pass through it: " + lanes;
         }
         return wrongWay;
+    }
+
+    /** Whether {@code q} is within a road's width of the straight piece's reference line (pieces are lines, checked apart). */
+    private static boolean near(Road piece, Vec2 q) {
+        double reach = Dimensions.ROAD_WIDTH;
+        Vec2 a = piece.start();
+        Vec2 b = piece.end();
+        return q.x() >= Math.min(a.x(), b.x()) - reach && q.x() <= Math.max(a.x(), b.x()) + reach
+                && q.y() >= Math.min(a.y(), b.y()) - reach && q.y() <= Math.max(a.y(), b.y()) + reach;
     }
 
     private static List<Double> samples(sitcov.world.Road road, List<Junction> tJunctions) {

@@ -60,11 +60,11 @@ final class RecordedTrack {
         xml.open("Trajectory", "name", track.entity() + " recorded", "closed", "false");
         xml.open("Shape").open("Polyline");
         List<RunRecording.Sample> samples = track.samples();
-        for (int i = 0; i < samples.size(); i++) {
+        for (int i : KeptVertices.of(samples)) {
             RunRecording.Sample s = samples.get(i);
-            xml.open("Vertex", "time", Xml.fine(i * Dimensions.TICK_SECONDS));
+            xml.startLine().open("Vertex", "time", Xml.seconds(i * Dimensions.TICK_SECONDS));
             ScenarioParts.frontPose(xml, s.x(), s.y(), s.bearing(), track.length());
-            xml.close();
+            xml.close().endLine();
         }
         xml.close().close().close();
     }

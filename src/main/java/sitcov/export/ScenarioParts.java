@@ -84,8 +84,8 @@ final class ScenarioParts {
 
     static void centrePose(Xml xml, double x, double y, double bearing) {
         xml.open("Position");
-        xml.empty("WorldPosition", "x", Xml.metres(AsamFrame.x(x)), "y", Xml.metres(AsamFrame.y(y)), "z", Xml.metres(0),
-                "h", Xml.fine(AsamFrame.heading(bearing)));
+        xml.empty("WorldPosition", "x", Xml.metres(AsamFrame.x(x)), "y", Xml.metres(AsamFrame.y(y)),
+                "h", Xml.angle(AsamFrame.heading(bearing)));
         xml.close();
     }
 
@@ -114,7 +114,7 @@ final class ScenarioParts {
     static void timeCondition(Xml xml, String name, double seconds) {
         xml.open("Condition", "name", name, "delay", "0", "conditionEdge", "rising");
         xml.open("ByValueCondition");
-        xml.empty("SimulationTimeCondition", "value", Xml.fine(seconds), "rule", "greaterThan");
+        xml.empty("SimulationTimeCondition", "value", Xml.seconds(seconds), "rule", "greaterThan");
         xml.close().close();
     }
 

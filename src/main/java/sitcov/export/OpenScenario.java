@@ -17,8 +17,8 @@ import sitcov.world.WorldMap;
  * "Export to OpenDRIVE and OpenSCENARIO"). A situation puts the car under test at its start with
  * the Target as its goal (the scenario stops when it is reached), the parked cars where they stand
  * and the moving cars at their starts, driving off at sitcov's speed. A recording replays a run:
- * every vehicle follows its timed trajectory, vertex by tick, and the run's accidents are declared
- * as parameters and as events at their times.
+ * every vehicle follows its timed trajectory, and the run's accidents are declared as parameters
+ * (and summed up in the header's description).
  */
 public final class OpenScenario {
     private static final double TICK = Dimensions.TICK_SECONDS;
@@ -94,9 +94,8 @@ public final class OpenScenario {
         xml.close().close();
         xml.open("Story", "name", "sitcov run " + runName(run));
         xml.open("Act", "name", "what happened");
-        for (RunRecording.Track track : run.tracks()) {
-            RecordedTrack.maneuverGroup(xml, track, version, track.entity().equals(RunRecording.EGO) ? accidents : List.of(),
-                    run);
+        for (int i = 0; i < run.tracks().size(); i++) {
+            RecordedTrack.maneuverGroup(xml, run.tracks().get(i), version, i);
         }
         ScenarioParts.timeTrigger(xml, "StartTrigger", "at the start", 0);
         xml.close().close();

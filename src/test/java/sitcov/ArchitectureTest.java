@@ -27,7 +27,7 @@ class ArchitectureTest {
 
     /** Packages that compute and write text only: no drawing, no window. */
     private static final Set<String> HEADLESS = union(SIMULATION,
-            "judge", "experiment", "drivers", "analysis", "verdict", "results", "protocol");
+            "judge", "experiment", "drivers", "analysis", "verdict", "results", "export", "protocol");
 
     /**
      * Which sitcov packages each package may import (its own is always allowed). Every arrow points down:
@@ -54,6 +54,8 @@ class ArchitectureTest {
             Map.entry("analysis", union(SIMULATION, "judge", "experiment")),
             Map.entry("verdict", union(SIMULATION, "judge", "experiment", "analysis")),
             Map.entry("results", union(SIMULATION, "judge", "experiment", "analysis")),
+            // maps, situations and recorded runs in the ASAM formats: a run of the builtin car is all it needs
+            Map.entry("export", union(SIMULATION, "judge")),
             Map.entry("render", union(SIMULATION, "judge", "experiment", "results")),
             Map.entry("figures", union(SIMULATION, "judge", "experiment", "analysis", "verdict", "results", "render")),
             Map.entry("report", union(SIMULATION, "judge", "experiment", "analysis", "verdict", "results", "render",
@@ -61,7 +63,7 @@ class ArchitectureTest {
             Map.entry("viewer", union(SIMULATION, "judge", "experiment", "analysis", "verdict", "results", "render",
                     "figures", "report")),
             Map.entry("cli", union(SIMULATION, "judge", "experiment", "drivers", "analysis", "verdict", "results",
-                    "render", "figures", "report", "viewer", "protocol")));
+                    "export", "render", "figures", "report", "viewer", "protocol")));
 
     private static final Pattern SITCOV_REFERENCE = Pattern.compile("\\bsitcov\\.([a-z]+)\\.");
     private static final Pattern GUI_REFERENCE = Pattern.compile("\\b(java\\.awt|javax\\.swing)\\b");

@@ -31,6 +31,7 @@ public final class Main {
                 new MergeCommand(),
                 new ReportCommand(),
                 new ReplayCommand(),
+                new ExportCommand(),
                 new ViewCommand(),
                 new SimulateCommand(),
                 new MapCommand(),

@@ -8,15 +8,11 @@ import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import sitcov.faults.Fault;
-import sitcov.experiment.ExperimentConfig;
-import sitcov.experiment.MapId;
-import sitcov.judge.FaultOutcome;
 import sitcov.judge.FaultVerdict;
 import sitcov.judge.FaultyRuns;
 import sitcov.judge.JudgedMap;
 import sitcov.judge.MapRunner;
 import sitcov.judge.RunObserver;
-import sitcov.judge.RunSummary;
 import sitcov.judge.Simulator;
 import sitcov.oracle.RunResult;
 import sitcov.render.FrameRecorder;
@@ -25,7 +21,6 @@ import sitcov.render.ReplayAnimation;
 import sitcov.render.ReplayPicture;
 import sitcov.render.RunRenderer;
 import sitcov.render.TrajectoryRecorder;
-import sitcov.results.ResultsFolder;
 import sitcov.results.ResultsRows;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
@@ -74,7 +69,7 @@ final class ReplayCommand implements Command {
         Optional<Path> gif = options.outputFile("--gif");
         JudgedMap judged = MapRunner.judge(c.map(), c.internalSeed(), c.fault().stream().toList(), c.length());
         if (c.row().isPresent()) {
-            Optional<String> differs = differences(c.row().get(), judged);
+            Optional<String> differs = RecordedRows.differences(c.row().get(), judged);
             if (differs.isPresent()) {
                 err.println("sitcov: replay: row " + c.row().get().number() + " does not replay: " + differs.get()
                         + ". Was the folder written by another version of sitcov? (see its manifest)");
@@ -149,22 +144,6 @@ final class ReplayCommand implements Command {
         };
     }
 
-    private static Optional<String> differences(ResultsRows.Row row, JudgedMap judged) {
-        RunSummary recorded = row.map().faultFree();
-        RunSummary replayed = RunSummary.of(judged.faultFree());
-        if (!recorded.equals(replayed)) {
-            return Optional.of("the fault-free run was recorded as " + recorded + ", the replay gives " + replayed);
-        }
-        if (row.outcome().isPresent()) {
-            FaultOutcome was = row.outcome().get();
-            FaultOutcome now = FaultOutcome.of(judged.verdicts().get(0));
-            if (!was.equals(now)) {
-                return Optional.of("fault " + was.fault().id() + " was recorded as " + was + ", the replay gives " + now);
-            }
-        }
-        return Optional.empty();
-    }
-
     private static Case fromFolder(Options options) throws UsageException {
         if (options.positional().size() != 1 || options.has("--seed") || options.has("--load")
                 || options.has("--internal-seed")) {
@@ -189,15 +168,7 @@ final class ReplayCommand implements Command {
                         options.value("--driver").orElseThrow(), options.count("--map", 0, Integer.MAX_VALUE).orElseThrow(),
                         oneFault(options, false));
             }
-            if (!row.config().controller().equals(ExperimentConfig.BUILTIN)) {
-                // a replay runs the builtin car: another controller's runs are replayed through it
-                String map = row.map().map() instanceof MapId.Situation s
-                        ? "--load " + ResultsFolder.situation(folder, s.name()) : "--seed " + row.map().externalSeed();
-                throw new UsageException("replay: " + folder + " tested the controller " + row.config().controller()
-                        + ", and replay runs the builtin car; run its map with that controller: 'simulate " + map
-                        + " --internal-seed " + row.map().internalSeed() + " --controller \"" + row.config().controller()
-                        + "\" --png FILE'");
-            }
+            RecordedRows.refuseOtherController("replay", folder, row);
             return new Case(ResultsRows.worldMap(folder, row.map()), row.map().internalSeed(), row.fault(),
                     row.config().faultyRuns(), Optional.of(row));
         } catch (IOException | IllegalArgumentException e) {

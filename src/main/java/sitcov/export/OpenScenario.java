@@ -17,8 +17,8 @@ import sitcov.world.WorldMap;
  * "Export to OpenDRIVE and OpenSCENARIO"). A situation puts the car under test at its start with
  * the Target as its goal (the scenario stops when it is reached), the parked cars where they stand
  * and the moving cars at their starts, driving off at sitcov's speed. A recording replays a run:
- * every vehicle follows its timed trajectory, vertex by tick, and the run's accidents are declared
- * as parameters and as events at their times.
+ * every vehicle follows its timed trajectory, and the run's accidents are declared as parameters
+ * (and summed up in the header's description).
  */
 public final class OpenScenario {
     private static final double TICK = Dimensions.TICK_SECONDS;
@@ -73,12 +73,13 @@ public final class OpenScenario {
 
     public static String recording(RunRecording run, String roadFile, ScenarioVersion version) {
         WorldMap map = run.map();
-        List<Accident> accidents = run.result().accidents();
+        List<Accident> accidents = run.accidents();
         Xml xml = new Xml();
         xml.open("OpenSCENARIO");
         ScenarioParts.header(xml, version, "sitcov recorded run: " + runName(run) + "; " + run.result().outcome()
-                + " after " + run.result().ticks() + " ticks; " + (accidents.isEmpty() ? "no accident"
-                : accidents.size() + " accidents, the first " + describe(run, accidents.get(0))));
+                + " after " + run.result().ticks() + " ticks" + (run.isCut() ? ", recorded to tick " + run.lastTick() : "")
+                + "; " + (accidents.isEmpty() ? "no accident" : accidents.size() + (accidents.size() == 1
+                ? " accident: " : " accidents, the first ") + describe(run, accidents.get(0))));
         ScenarioParts.context(xml, parameters(run), roadFile);
         entities(xml, map);
         xml.open("Storyboard");
@@ -93,15 +94,14 @@ public final class OpenScenario {
         xml.close().close();
         xml.open("Story", "name", "sitcov run " + runName(run));
         xml.open("Act", "name", "what happened");
-        for (RunRecording.Track track : run.tracks()) {
-            RecordedTrack.maneuverGroup(xml, track, version, track.entity().equals(RunRecording.EGO) ? accidents : List.of(),
-                    run);
+        for (int i = 0; i < run.tracks().size(); i++) {
+            RecordedTrack.maneuverGroup(xml, run.tracks().get(i), version, i);
         }
         ScenarioParts.timeTrigger(xml, "StartTrigger", "at the start", 0);
         xml.close().close();
         xml.open("StopTrigger");
         xml.open("ConditionGroup");
-        ScenarioParts.timeCondition(xml, "the run ended", run.seconds());
+        ScenarioParts.timeCondition(xml, run.isCut() ? "the recording ends" : "the run ended", run.seconds());
         xml.close();
         xml.close();
         xml.close();
@@ -116,13 +116,15 @@ public final class OpenScenario {
         out.add(new String[] {"sitcovInternalSeed", "string", Long.toString(run.internalSeed())});
         out.add(new String[] {"sitcovFaults", "string", faults(run)});
         out.add(new String[] {"sitcovOutcome", "string", run.result().outcome().name()});
-        out.add(new String[] {"accidentCount", "integer", Integer.toString(run.result().accidents().size())});
+        out.add(new String[] {"sitcovTicks", "integer", Long.toString(run.result().ticks())});
+        out.add(new String[] {"sitcovLastTickRecorded", "integer", Long.toString(run.lastTick())});
+        out.add(new String[] {"accidentCount", "integer", Integer.toString(run.accidents().size())});
         int n = 1;
-        for (Accident a : run.result().accidents()) {
+        for (Accident a : run.accidents()) {
             String p = "accident" + n++;
             out.add(new String[] {p + "Type", "string", a.type().name()});
             out.add(new String[] {p + "Tick", "integer", Long.toString(a.tick())});
-            out.add(new String[] {p + "Time", "double", Xml.fine(AsamFrame.seconds(a.tick()))});
+            out.add(new String[] {p + "Time", "double", Xml.seconds(AsamFrame.seconds(a.tick()))});
             out.add(new String[] {p + "X", "double", Xml.metres(AsamFrame.x(a.x()))});
             out.add(new String[] {p + "Y", "double", Xml.metres(AsamFrame.y(a.y()))});
             out.add(new String[] {p + "Other", "string", otherParty(run, a)});

@@ -1,33 +1,104 @@
 package sitcov.export;
 
+import java.util.ArrayList;
 import java.util.List;
-import sitcov.oracle.Accident;
 import sitcov.world.Dimensions;
 
 /**
- * One vehicle of a recorded run as a maneuver group: it follows its trajectory, a vertex a tick at
- * the tick's time, positions followed exactly; it is hidden while it is off the map (a moving car
- * that left waits to be replaced at a dead end) and shown again when it comes back. The car under
- * test's group also carries an event at each accident's time, named after the accident, so that a
- * player's log says what happened when it happens.
+ * One vehicle of a recorded run as a maneuver group. Each stretch the vehicle spends on the map is
+ * an event at its first tick: a teleport to where the stretch starts and a timed trajectory, a
+ * vertex for each tick interpolation between vertices cannot give back ({@link KeptVertices}),
+ * positions followed exactly. A moving car that leaves the map (to be replaced at a dead end later)
+ * is teleported to a parking place of its own outside the world until it comes back: players such
+ * as CARLA's ScenarioRunner know no way to hide a vehicle.
  */
 final class RecordedTrack {
+    /** Parking places lie in a row this far south of the world, this far apart. */
+    private static final double PARKING_OFFSET = 20;
+
     private RecordedTrack() {
     }
 
-    static void maneuverGroup(Xml xml, RunRecording.Track track, ScenarioVersion version, List<Accident> accidents,
-                              RunRecording run) {
+    /** A stretch of consecutive samples on the map, first and last included. */
+    record Stretch(int first, int last) {
+    }
+
+    static void maneuverGroup(Xml xml, RunRecording.Track track, ScenarioVersion version, int parkingIndex) {
+        List<RunRecording.Sample> samples = track.samples();
         xml.open("ManeuverGroup", "maximumExecutionCount", "1", "name", track.entity());
         OpenScenario.actors(xml, track.entity());
         xml.open("Maneuver", "name", track.entity() + " as recorded");
-        xml.open("Event", "name", track.entity() + " follows its recorded path", "priority", "parallel");
-        xml.open("Action", "name", track.entity() + " trajectory");
+        for (Stretch s : stretches(samples)) {
+            String name = track.entity() + (s.first() == 0 ? " from the start" : " back at tick " + (s.first() - 1));
+            xml.open("Event", "name", name, "priority", "parallel");
+            xml.open("Action", "name", name + ": in place");
+            RunRecording.Sample first = samples.get(s.first());
+            xml.open("PrivateAction").open("TeleportAction");
+            ScenarioParts.frontPose(xml, first.x(), first.y(), first.bearing(), track.length());
+            xml.close().close();
+            xml.close();
+            if (s.last() > s.first()) {
+                xml.open("Action", "name", name + ": as recorded");
+                follow(xml, track, s, version);
+                xml.close();
+            }
+            ScenarioParts.timeTrigger(xml, "StartTrigger", "at sample " + s.first(), s.first() * Dimensions.TICK_SECONDS);
+            xml.close();
+            if (s.last() < samples.size() - 1) {
+                String away = track.entity() + " leaves the map at tick " + s.last();
+                xml.open("Event", "name", away, "priority", "parallel");
+                xml.open("Action", "name", away + ": parked outside the world");
+                xml.open("PrivateAction").open("TeleportAction");
+                ScenarioParts.centrePose(xml, -PARKING_OFFSET * (parkingIndex + 1), Dimensions.WORLD_HEIGHT + PARKING_OFFSET,
+                        sitcov.geom.Compass.EAST.bearing());
+                xml.close().close();
+                xml.close();
+                ScenarioParts.timeTrigger(xml, "StartTrigger", "at sample " + (s.last() + 1),
+                        (s.last() + 1) * Dimensions.TICK_SECONDS);
+                xml.close();
+            }
+        }
+        xml.close();
+        xml.close();
+    }
+
+    /** The maximal runs of samples on the map, in order. */
+    static List<Stretch> stretches(List<RunRecording.Sample> samples) {
+        List<Stretch> out = new ArrayList<>();
+        int start = -1;
+        for (int i = 0; i < samples.size(); i++) {
+            boolean on = samples.get(i).active();
+            if (on && start < 0) {
+                start = i;
+            }
+            if (!on && start >= 0) {
+                out.add(new Stretch(start, i - 1));
+                start = -1;
+            }
+        }
+        if (start >= 0) {
+            out.add(new Stretch(start, samples.size() - 1));
+        }
+        return out;
+    }
+
+    private static void follow(Xml xml, RunRecording.Track track, Stretch stretch, ScenarioVersion version) {
         xml.open("PrivateAction").open("RoutingAction").open("FollowTrajectoryAction");
-        if (version.wrapsTrajectories()) {
+        boolean wraps = version.wrapsTrajectories();
+        if (wraps) {
             xml.open("TrajectoryRef");
         }
-        trajectory(xml, track);
-        if (version.wrapsTrajectories()) {
+        xml.open("Trajectory", "name", track.entity() + " from sample " + stretch.first(), "closed", "false");
+        xml.open("Shape").open("Polyline");
+        List<RunRecording.Sample> samples = track.samples().subList(stretch.first(), stretch.last() + 1);
+        for (int i : KeptVertices.of(samples)) {
+            RunRecording.Sample s = samples.get(i);
+            xml.startLine().open("Vertex", "time", Xml.seconds((stretch.first() + i) * Dimensions.TICK_SECONDS));
+            ScenarioParts.frontPose(xml, s.x(), s.y(), s.bearing(), track.length());
+            xml.close().endLine();
+        }
+        xml.close().close().close();
+        if (wraps) {
             xml.close();
         }
         xml.open("TimeReference");
@@ -35,60 +106,5 @@ final class RecordedTrack {
         xml.close();
         xml.empty("TrajectoryFollowingMode", "followingMode", "position");
         xml.close().close().close();
-        xml.close();
-        ScenarioParts.timeTrigger(xml, "StartTrigger", "at the start", 0);
-        xml.close();
-        visibility(xml, track);
-        xml.close();
-        if (!accidents.isEmpty()) {
-            xml.open("Maneuver", "name", "accidents");
-            int n = 1;
-            for (Accident a : accidents) {
-                String name = "accident " + n++ + ": " + OpenScenario.describe(run, a);
-                xml.open("Event", "name", name, "priority", "parallel");
-                // the event is there to be logged at its time; showing the visible car changes nothing
-                visibilityAction(xml, name, true);
-                ScenarioParts.timeTrigger(xml, "StartTrigger", "at tick " + a.tick(), AsamFrame.seconds(a.tick()));
-                xml.close();
-            }
-            xml.close();
-        }
-        xml.close();
-    }
-
-    private static void trajectory(Xml xml, RunRecording.Track track) {
-        xml.open("Trajectory", "name", track.entity() + " recorded", "closed", "false");
-        xml.open("Shape").open("Polyline");
-        List<RunRecording.Sample> samples = track.samples();
-        for (int i = 0; i < samples.size(); i++) {
-            RunRecording.Sample s = samples.get(i);
-            xml.open("Vertex", "time", Xml.fine(i * Dimensions.TICK_SECONDS));
-            ScenarioParts.frontPose(xml, s.x(), s.y(), s.bearing(), track.length());
-            xml.close();
-        }
-        xml.close().close().close();
-    }
-
-    /** An event at every change between on and off the map. */
-    private static void visibility(Xml xml, RunRecording.Track track) {
-        List<RunRecording.Sample> samples = track.samples();
-        for (int i = 1; i < samples.size(); i++) {
-            boolean now = samples.get(i).active();
-            if (now != samples.get(i - 1).active()) {
-                String name = track.entity() + (now ? " comes back at " : " leaves the map at ") + "tick " + (i - 1);
-                xml.open("Event", "name", name, "priority", "parallel");
-                visibilityAction(xml, name, now);
-                ScenarioParts.timeTrigger(xml, "StartTrigger", "at tick " + (i - 1), i * Dimensions.TICK_SECONDS);
-                xml.close();
-            }
-        }
-    }
-
-    private static void visibilityAction(Xml xml, String name, boolean visible) {
-        xml.open("Action", "name", name);
-        xml.open("PrivateAction");
-        String v = Boolean.toString(visible);
-        xml.empty("VisibilityAction", "graphics", v, "traffic", v, "sensors", v);
-        xml.close().close();
     }
 }

@@ -20,12 +20,39 @@ import sitcov.world.WorldMap;
  * exactly what happened. A track's sample 0 is the start (time 0 s); sample {@code t + 1} is the
  * state after tick {@code t}. Parked cars never move, so the map holds them.
  *
+ * @param result the whole run's result, even where the recording stops before its end
  * @param tracks the car under test first, then every moving car in the order of the map's moving cars
  */
 public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, RunResult result, List<Track> tracks) {
     public RunRecording {
         faults = Set.copyOf(faults);
         tracks = List.copyOf(tracks);
+    }
+
+    /**
+     * The same run recorded only to the end of {@code lastTick}: a failing run need not be played
+     * long after its failure (a car that crashed early may stand for thousands of ticks).
+     */
+    public RunRecording until(long lastTick) {
+        int samples = (int) Math.min(tracks.get(0).samples().size(), lastTick + 2);
+        List<Track> cut = tracks.stream().map(t -> new Track(t.entity(), t.sitcovId(), t.length(), t.width(),
+                t.samples().subList(0, samples))).toList();
+        return new RunRecording(map, internalSeed, faults, result, cut);
+    }
+
+    /** The last tick recorded. */
+    public long lastTick() {
+        return tracks.get(0).samples().size() - 2;
+    }
+
+    /** Whether the recording stops before the run ended. */
+    public boolean isCut() {
+        return lastTick() + 1 < result.ticks();
+    }
+
+    /** The run's accidents up to the end of the recording. */
+    public List<sitcov.oracle.Accident> accidents() {
+        return result.accidents().stream().filter(a -> a.tick() <= lastTick()).toList();
     }
 
     /** A vehicle's front-centre pose (as sitcov anchors vehicles) and whether it was on the map. */

@@ -21,12 +21,17 @@ final class ScenarioParts {
     private ScenarioParts() {
     }
 
-    /** A kind of vehicle: its size, and its rear axle (which it turns about) behind its front. */
-    record Kind(String description, double length, double width, double rearAxleBehindFront) {
-        static final Kind CAR_UNDER_TEST = new Kind("sitcov car under test", Dimensions.AUTONOMOUS_CAR_LENGTH,
-                Dimensions.AUTONOMOUS_CAR_WIDTH, AutonomousCar.REAR_AXLE);
-        static final Kind PARKED = new Kind("parked car", Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH, MovingCar.REAR_AXLE);
-        static final Kind MOVING = new Kind("moving car", Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH, MovingCar.REAR_AXLE);
+    /**
+     * A kind of vehicle: its size, its rear axle (which it turns about) behind its front, and the
+     * model a player draws. CARLA's ScenarioRunner takes a vehicle's name for the CARLA blueprint
+     * to spawn, so the names are blueprints of about the right size; other players ignore them.
+     */
+    record Kind(String model, double length, double width, double rearAxleBehindFront, boolean underTest) {
+        static final Kind CAR_UNDER_TEST = new Kind("vehicle.micro.microlino", Dimensions.AUTONOMOUS_CAR_LENGTH,
+                Dimensions.AUTONOMOUS_CAR_WIDTH, AutonomousCar.REAR_AXLE, true);
+        static final Kind PARKED = new Kind("vehicle.lincoln.mkz_2020", Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH,
+                MovingCar.REAR_AXLE, false);
+        static final Kind MOVING = PARKED;
     }
 
     static void header(Xml xml, ScenarioVersion version, String description) {
@@ -52,7 +57,7 @@ final class ScenarioParts {
     static void vehicle(Xml xml, String entity, Kind kind) {
         double halfLength = kind.length() / 2;
         xml.open("ScenarioObject", "name", entity);
-        xml.open("Vehicle", "name", kind.description(), "vehicleCategory", "car");
+        xml.open("Vehicle", "name", kind.model(), "vehicleCategory", "car");
         xml.open("BoundingBox");
         xml.empty("Center", "x", Xml.metres(0), "y", Xml.metres(0), "z", Xml.metres(0.75));
         xml.empty("Dimensions", "width", Xml.metres(kind.width()), "length", Xml.metres(kind.length()),
@@ -67,7 +72,14 @@ final class ScenarioParts {
         axle(xml, "FrontAxle", Math.min(halfLength - 0.3, rear + 2.5));
         axle(xml, "RearAxle", rear);
         xml.close();
-        xml.empty("Properties");
+        if (kind.underTest()) {
+            // how ScenarioRunner tells the ego vehicle, the one a user's agent drives
+            xml.open("Properties");
+            xml.empty("Property", "name", "type", "value", "ego_vehicle");
+            xml.close();
+        } else {
+            xml.empty("Properties");
+        }
         xml.close().close();
     }
 
@@ -84,8 +96,8 @@ final class ScenarioParts {
 
     static void centrePose(Xml xml, double x, double y, double bearing) {
         xml.open("Position");
-        xml.empty("WorldPosition", "x", Xml.metres(AsamFrame.x(x)), "y", Xml.metres(AsamFrame.y(y)), "z", Xml.metres(0),
-                "h", Xml.fine(AsamFrame.heading(bearing)));
+        xml.empty("WorldPosition", "x", Xml.metres(AsamFrame.x(x)), "y", Xml.metres(AsamFrame.y(y)),
+                "h", Xml.angle(AsamFrame.heading(bearing)));
         xml.close();
     }
 
@@ -114,7 +126,7 @@ final class ScenarioParts {
     static void timeCondition(Xml xml, String name, double seconds) {
         xml.open("Condition", "name", name, "delay", "0", "conditionEdge", "rising");
         xml.open("ByValueCondition");
-        xml.empty("SimulationTimeCondition", "value", Xml.fine(seconds), "rule", "greaterThan");
+        xml.empty("SimulationTimeCondition", "value", Xml.seconds(seconds), "rule", "greaterThan");
         xml.close().close();
     }
 

@@ -12,6 +12,8 @@ import java.util.Locale;
 final class Xml {
     private final StringBuilder text = new StringBuilder(4096);
     private final Deque<String> open = new ArrayDeque<>();
+    /** Inside a one-line block: no line breaks, no indentation. */
+    private boolean oneLine;
 
     Xml() {
         text.append("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
@@ -19,21 +21,40 @@ final class Xml {
 
     Xml open(String name, String... attributes) {
         start(name, attributes);
-        text.append(">\n");
+        text.append('>');
+        newline();
         open.push(name);
         return this;
     }
 
     Xml empty(String name, String... attributes) {
         start(name, attributes);
-        text.append("/>\n");
+        text.append("/>");
+        newline();
         return this;
     }
 
     Xml close() {
         String name = open.pop();
         indent();
-        text.append("</").append(name).append(">\n");
+        text.append("</").append(name).append('>');
+        newline();
+        return this;
+    }
+
+    /**
+     * Writes what follows on one line, until {@link #endLine()}: a trajectory's many small
+     * vertices read better, and take a third of the bytes, one to a line.
+     */
+    Xml startLine() {
+        indent();
+        oneLine = true;
+        return this;
+    }
+
+    Xml endLine() {
+        oneLine = false;
+        text.append('\n');
         return this;
     }
 
@@ -62,7 +83,15 @@ final class Xml {
     }
 
     private void indent() {
-        text.append("  ".repeat(open.size()));
+        if (!oneLine) {
+            text.append("  ".repeat(open.size()));
+        }
+    }
+
+    private void newline() {
+        if (!oneLine) {
+            text.append('\n');
+        }
     }
 
     static String escape(String s) {
@@ -86,7 +115,17 @@ final class Xml {
         return fixed(v, 4);
     }
 
-    /** An angle or curvature: to a millionth, far below a millimetre over a car's length. */
+    /** A heading in radians: a millionth is 5 µm over a car's length. */
+    static String angle(double v) {
+        return fixed(v, 6);
+    }
+
+    /** A time in seconds: every time sitcov exports is a whole number of 0.2 s ticks. */
+    static String seconds(double v) {
+        return fixed(v, 1);
+    }
+
+    /** A curvature: to a billionth. */
     static String fine(double v) {
         return fixed(v, 9);
     }

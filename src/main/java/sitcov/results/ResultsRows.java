@@ -2,6 +2,7 @@ package sitcov.results;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import sitcov.experiment.ExperimentConfig;
@@ -43,6 +44,21 @@ public final class ResultsRows {
         int slot = (number - 1) % perMap;
         MapRun map = maps.get((number - 1) / perMap).run();
         return new Row(config, map, slot == 0 ? Optional.empty() : Optional.of(config.faultList().get(slot - 1)), number);
+    }
+
+    /** Every row of {@code runs.csv}, in its order. */
+    public static List<Row> all(Path folder) throws IOException {
+        Manifest manifest = Manifest.read(folder);
+        ExperimentConfig config = manifest.config();
+        List<Journal.Entry> maps = JournalFiles.inOrder(config, JournalFiles.read(folder, manifest));
+        List<Row> rows = new ArrayList<>();
+        for (Journal.Entry map : maps) {
+            rows.add(new Row(config, map.run(), Optional.empty(), rows.size() + 1));
+            for (Fault f : config.faultList()) {
+                rows.add(new Row(config, map.run(), Optional.of(f), rows.size() + 1));
+            }
+        }
+        return rows;
     }
 
     public static Row find(Path folder, int replication, String driver, int mapIndex, Optional<Fault> fault)

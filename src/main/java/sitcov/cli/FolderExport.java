@@ -1,0 +1,143 @@
+package sitcov.cli;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import sitcov.export.AsamFrame;
+import sitcov.export.OpenScenario;
+import sitcov.export.RunRecording;
+import sitcov.export.ScenarioVersion;
+import sitcov.faults.Fault;
+import sitcov.judge.FaultVerdict;
+import sitcov.judge.JudgedMap;
+import sitcov.judge.MapRunner;
+import sitcov.oracle.Accident;
+import sitcov.results.ResultsRows;
+import sitcov.world.WorldMap;
+
+/**
+ * {@code export RESULTS --row N} and {@code export RESULTS --found}: runs a results folder recorded,
+ * run again with the builtin car (and checked against {@code runs.csv}, as replays are) and written
+ * as recordings beside their map.
+ */
+final class FolderExport {
+    private static final String INDEX_HEADER = "row,replication,driver,map_index,external_seed,internal_seed,fault,"
+            + "new_accident,tick,seconds,x,y,road_file,scenario_file";
+
+    /** A found run is recorded to 5 s after the accident that found it: what follows shows nothing more. */
+    static final long AFTER_FAILURE_TICKS = 25;
+
+    private FolderExport() {
+    }
+
+    static ExportCommand.Plan plan(Options options, ScenarioVersion version) throws UsageException {
+        if (options.positional().size() != 1 || options.has("--seed") || options.has("--load")
+                || options.has("--record") || options.has("--internal-seed")) {
+            throw new UsageException("export: name one results folder with --row N or --found; maps (--seed, --load)"
+                    + " are exported without a folder.");
+        }
+        if (options.has("--row") == options.has("--found")) {
+            throw new UsageException("export: with a results folder, give --row N (one recorded run) or --found"
+                    + " (every run that found a fault).");
+        }
+        Path folder = Path.of(options.positional().get(0));
+        try {
+            return options.has("--row") ? row(folder, options, version) : found(folder, options, version);
+        } catch (IOException | IllegalArgumentException e) {
+            throw new UsageException("export: " + e.getMessage() + ".");
+        }
+    }
+
+    private static ExportCommand.Plan row(Path folder, Options options, ScenarioVersion version)
+            throws UsageException, IOException {
+        if (options.has("--fault")) {
+            throw new UsageException("export: --row N names the run whole, its fault included; drop --fault.");
+        }
+        int number = options.count("--row", 1, Integer.MAX_VALUE).orElseThrow();
+        ResultsRows.Row row = ResultsRows.row(folder, number);
+        RecordedRows.refuseOtherController("export", folder, row);
+        WorldMap map = ResultsRows.worldMap(folder, row.map());
+        String base = "row-" + number;
+        List<ExportCommand.Planned> files = new ArrayList<>(ExportCommand.mapFiles(base, map, version));
+        Set<Fault> faults = row.fault().map(Set::of).orElse(Set.of());
+        ExportCommand.Planned run = ExportCommand.recording(base + "-run.xosc", base + ".xodr", map,
+                row.map().internalSeed(), faults, version);
+        files.add(new ExportCommand.Planned(run.name(), () -> {
+            checked(row, map);
+            return run.text().get();
+        }));
+        if (row.fault().isPresent()) {
+            files.add(ExportCommand.recording(base + "-run-fault-free.xosc", base + ".xodr", map,
+                    row.map().internalSeed(), Set.of(), version));
+        }
+        return new ExportCommand.Plan(files, "Exported row " + number + " of " + folder + " to DIR: "
+                + String.join(", ", files.stream().map(ExportCommand.Planned::name).toList()) + ".");
+    }
+
+    private static ExportCommand.Plan found(Path folder, Options options, ScenarioVersion version)
+            throws UsageException, IOException {
+        Optional<Set<Fault>> only = options.faults("--fault");
+        List<ResultsRows.Row> rows = ResultsRows.all(folder);
+        if (only.isPresent() && !rows.isEmpty()) {
+            for (Fault f : only.get()) {
+                if (!rows.get(0).config().faultList().contains(f)) {
+                    throw new UsageException("export: the experiment in " + folder + " did not seed fault " + f.id()
+                            + "; its faults are " + rows.get(0).config().faultList().stream().map(Fault::id).toList()
+                            + ".");
+                }
+            }
+        }
+        List<ResultsRows.Row> found = rows.stream().filter(r -> r.outcome().isPresent()
+                && r.outcome().get().detection().found()
+                && (only.isEmpty() || only.get().contains(r.fault().orElseThrow()))).toList();
+        if (found.isEmpty()) {
+            throw new UsageException("export: no run in " + folder + " found " + only.map(f -> "fault "
+                    + f.stream().map(Fault::id).sorted().toList()).orElse("a fault") + "; there is nothing to export.");
+        }
+        RecordedRows.refuseOtherController("export", folder, found.get(0));
+        List<ExportCommand.Planned> files = new ArrayList<>();
+        List<String> index = new ArrayList<>(List.of(INDEX_HEADER));
+        for (ResultsRows.Row row : found) {
+            String base = "row-" + row.number();
+            WorldMap map = ResultsRows.worldMap(folder, row.map());
+            files.add(new ExportCommand.Planned(base + ".xodr", () -> sitcov.export.OpenDrive.document(map)));
+            files.add(new ExportCommand.Planned(base + ".xosc", () -> {
+                JudgedMap judged = checked(row, map);
+                index.add(indexLine(row, judged, base));
+                long failure = judged.verdicts().get(0).newAccident().orElseThrow().tick();
+                return OpenScenario.recording(RunRecording.of(map, row.map().internalSeed(), Set.of(row.fault().orElseThrow()))
+                        .until(failure + AFTER_FAILURE_TICKS), base + ".xodr", version);
+            }));
+        }
+        files.add(new ExportCommand.Planned(ExportCommand.INDEX, () -> String.join("\n", index) + "\n"));
+        return new ExportCommand.Plan(files, "Exported the " + found.size() + " runs of " + folder
+                + " that found a fault to DIR (" + ExportCommand.INDEX + " lists them, each run's map and the accident"
+                + " that found it; each run is recorded to 5 s after that accident).");
+    }
+
+    /** The row judged again; it must give what runs.csv recorded, or the export stops. */
+    private static JudgedMap checked(ResultsRows.Row row, WorldMap map) {
+        JudgedMap judged = MapRunner.judge(map, row.map().internalSeed(), row.fault().stream().toList(),
+                row.config().faultyRuns());
+        Optional<String> differs = RecordedRows.differences(row, judged);
+        if (differs.isPresent()) {
+            throw new ExportCommand.RowMismatch("row " + row.number() + " does not run again as recorded: " + differs.get()
+                    + ". Was the folder written by another version of sitcov? (see its manifest)");
+        }
+        return judged;
+    }
+
+    private static String indexLine(ResultsRows.Row row, JudgedMap judged, String base) {
+        FaultVerdict verdict = judged.verdicts().get(0);
+        Accident a = verdict.newAccident().orElseThrow();
+        return String.join(",", List.of(Integer.toString(row.number()), Integer.toString(row.map().replication()),
+                row.map().driver(), Integer.toString(row.map().mapIndex()), Long.toString(row.map().externalSeed()),
+                Long.toString(row.map().internalSeed()), Integer.toString(verdict.fault().id()), a.type().name(),
+                Long.toString(a.tick()), String.format(java.util.Locale.ROOT, "%.1f", AsamFrame.seconds(a.tick())),
+                String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.x(a.x())),
+                String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.y(a.y())), base + ".xodr", base + ".xosc"));
+    }
+}

@@ -1,0 +1,47 @@
+package sitcov.cli;
+
+import java.nio.file.Path;
+import java.util.Optional;
+import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.MapId;
+import sitcov.judge.FaultOutcome;
+import sitcov.judge.JudgedMap;
+import sitcov.judge.RunSummary;
+import sitcov.results.ResultsFolder;
+import sitcov.results.ResultsRows;
+
+/** What the commands that run a recorded row again ({@code replay}, {@code export}) check before they trust it. */
+final class RecordedRows {
+    private RecordedRows() {
+    }
+
+    /** Refuses a row of a folder that tested another controller: these commands run the builtin car. */
+    static void refuseOtherController(String command, Path folder, ResultsRows.Row row) throws UsageException {
+        if (row.config().controller().equals(ExperimentConfig.BUILTIN)) {
+            return;
+        }
+        String map = row.map().map() instanceof MapId.Situation s
+                ? "--load " + ResultsFolder.situation(folder, s.name()) : "--seed " + row.map().externalSeed();
+        throw new UsageException(command + ": " + folder + " tested the controller " + row.config().controller()
+                + ", and " + command + " runs the builtin car; run its map with that controller: 'simulate " + map
+                + " --internal-seed " + row.map().internalSeed() + " --controller \"" + row.config().controller()
+                + "\" --png FILE'");
+    }
+
+    /** How the row, judged again, differs from what {@code runs.csv} recorded; empty when it is the same. */
+    static Optional<String> differences(ResultsRows.Row row, JudgedMap judged) {
+        RunSummary recorded = row.map().faultFree();
+        RunSummary replayed = RunSummary.of(judged.faultFree());
+        if (!recorded.equals(replayed)) {
+            return Optional.of("the fault-free run was recorded as " + recorded + ", the replay gives " + replayed);
+        }
+        if (row.outcome().isPresent()) {
+            FaultOutcome was = row.outcome().get();
+            FaultOutcome now = FaultOutcome.of(judged.verdicts().get(0));
+            if (!was.equals(now)) {
+                return Optional.of("fault " + was.fault().id() + " was recorded as " + was + ", the replay gives " + now);
+            }
+        }
+        return Optional.empty();
+    }
+}

@@ -4,25 +4,31 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import org.w3c.dom.Element;
 
 /**
  * An OpenSCENARIO document read back with the DOM parser: what the tests compare with sitcov — the header's
  * version, the road file, each entity's bounding box, its Init position and speed, the timed trajectory it follows
  * (vertex times through the trajectory's Timing when it has one), the positions the ego is sent to, the
- * parameters, and the trigger times of the events of each named maneuver.
+ * parameters, and each event of the story: whose it is, when it starts, where it teleports and what it follows.
  */
 record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, Box> entities,
-                     Map<String, Pose> initial, Map<String, Double> initialSpeed, Map<String, List<Pose>> trajectories,
-                     List<Pose> acquiredPositions, List<Pose> reachConditions, Map<String, String> parameters,
-                     Map<String, List<Double>> eventTimes) {
+                     Map<String, Pose> initial, Map<String, Double> initialSpeed, List<Event> events,
+                     List<Pose> acquiredPositions, List<Pose> reachConditions, Map<String, String> parameters) {
 
     /** A WorldPosition, and the time of its vertex when it is one (NaN otherwise). */
     record Pose(double time, double x, double y, double h) {
     }
 
     record Box(double centreX, double centreY, double length, double width) {
+    }
+
+    /** An event of an entity's maneuver: its start time (NaN without a time condition), its teleports and its trajectories. */
+    record Event(String entity, String name, double time, List<Pose> teleports, List<List<Pose>> trajectories) {
+    }
+
+    List<Event> eventsOf(String entity) {
+        return events.stream().filter(e -> e.entity().equals(entity)).toList();
     }
 
     static ScenarioModel parse(String xml) {
@@ -52,36 +58,28 @@ record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, B
                 put(speeds, entity, Dom.number(s, "value"));
             }
         }
-        Map<String, List<Pose>> trajectories = new LinkedHashMap<>();
-        for (Element follow : Dom.descendants(storyboard, "FollowTrajectoryAction")) {
-            put(trajectories, actor(follow), vertices(follow));
+        List<Event> events = new ArrayList<>();
+        for (Element event : Dom.descendants(storyboard, "Event")) {
+            List<Element> time = Dom.descendants(Dom.child(event, "StartTrigger"), "SimulationTimeCondition");
+            events.add(new Event(actor(event), Dom.text(event, "name"),
+                    time.isEmpty() ? Double.NaN : Dom.number(time.get(0), "value"),
+                    Dom.descendants(event, "TeleportAction").stream()
+                            .map(t -> pose(Dom.child(Dom.child(t, "Position"), "WorldPosition"), Double.NaN)).toList(),
+                    Dom.descendants(event, "FollowTrajectoryAction").stream().map(ScenarioModel::vertices).toList()));
         }
         Map<String, String> parameters = new LinkedHashMap<>();
         Dom.optionalChild(root, "ParameterDeclarations").ifPresent(ps -> Dom.children(ps, "ParameterDeclaration")
                 .forEach(p -> put(parameters, Dom.text(p, "name"), Dom.text(p, "value"))));
-        Map<String, List<Double>> eventTimes = new LinkedHashMap<>();
-        for (Element maneuver : Dom.descendants(storyboard, "Maneuver")) {
-            List<Double> times = new ArrayList<>();
-            for (Element event : Dom.children(maneuver, "Event")) {
-                Dom.descendants(Dom.child(event, "StartTrigger"), "SimulationTimeCondition")
-                        .forEach(c -> times.add(Dom.number(c, "value")));
-            }
-            put(eventTimes, Dom.text(maneuver, "name"), times);
-        }
         return new ScenarioModel((int) Dom.number(header, "revMajor"), (int) Dom.number(header, "revMinor"),
-                Dom.text(logic, "filepath"), entities, initial, speeds, trajectories,
+                Dom.text(logic, "filepath"), entities, initial, speeds, events,
                 positionsIn(storyboard, "AcquirePositionAction"), positionsIn(storyboard, "ReachPositionCondition"),
-                parameters, eventTimes);
+                parameters);
     }
 
-    /** The entity a trajectory moves: its Private's, or its ManeuverGroup's one actor. */
-    private static String actor(Element follow) {
-        Optional<Element> init = Dom.ancestor(follow, "Private");
-        if (init.isPresent()) {
-            return Dom.text(init.get(), "entityRef");
-        }
-        Element group = Dom.ancestor(follow, "ManeuverGroup")
-                .orElseThrow(() -> new AssertionError("a FollowTrajectoryAction belongs to no entity"));
+    /** The entity an event moves: its ManeuverGroup's one actor. */
+    private static String actor(Element event) {
+        Element group = Dom.ancestor(event, "ManeuverGroup")
+                .orElseThrow(() -> new AssertionError(Dom.describe(event) + " belongs to no ManeuverGroup"));
         List<Element> refs = Dom.children(Dom.child(group, "Actors"), "EntityRef");
         if (refs.size() != 1) {
             throw new AssertionError(Dom.describe(group) + " has " + refs.size() + " actors, expected the one that follows its trajectory");

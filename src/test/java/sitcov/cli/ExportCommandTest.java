@@ -18,7 +18,9 @@ import javax.xml.xpath.XPathFactory;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.w3c.dom.Document;
+import sitcov.export.AsamSchemas;
 import sitcov.export.OpenDrive;
+import sitcov.export.ScenarioVersion;
 import sitcov.results.ResultsFolder;
 import sitcov.world.MapGenerator;
 
@@ -163,6 +165,22 @@ class ExportCommandTest {
                         && parameter(scenario, "accident" + k + "Tick").equals(cells[header.indexOf("tick")]);
             }
             assertTrue(declared, index.get(i + 1) + ": its scenario declares no such accident at that tick");
+        }
+    }
+
+    @Test
+    void theFoundRunsOfAFolderAreValidOpenDriveAndOpenScenario() throws Exception {
+        // 1.0, the default, which ScenarioRunner reads; the export's own tests validate every version
+        CliRunner r = CliRunner.run("export", finding().toString(), "--found", "--out", dir.toString());
+        assertEquals(ExitCode.OK, r.exitCode(), r.err());
+        List<String> exported = files(dir);
+        assertTrue(exported.size() > 2, exported.toString());
+        for (String f : exported) {
+            if (f.endsWith(".xodr")) {
+                AsamSchemas.assertValid(AsamSchemas.openDrive(), Files.readString(dir.resolve(f)), f);
+            } else if (f.endsWith(".xosc")) {
+                AsamSchemas.assertValid(AsamSchemas.openScenario(ScenarioVersion.V1_0), Files.readString(dir.resolve(f)), f);
+            }
         }
     }
 

@@ -23,9 +23,10 @@ import org.xml.sax.SAXParseException;
 /**
  * The ASAM schemas the export is checked against: OpenDRIVE 1.7 and OpenSCENARIO 1.0–1.3, as the
  * pinned scenariogeneration wheel ships them, fetched by .ci/run into target/asam-schemas/. Missing
- * schemas skip the tests that need them, except under CI=true, where they fail naming the fetch.
+ * schemas skip the tests that need them, except under CI=true, where they fail naming the fetch (README,
+ * "Export to OpenDRIVE and OpenSCENARIO"). Public for the export command's tests.
  */
-final class AsamSchemas {
+public final class AsamSchemas {
     static final Path DIR = Path.of("target", "asam-schemas");
     static final String FETCH = "python3 -m pip download --no-deps scenariogeneration==0.16.7 -d target/asam"
             + " && unzip -j -o target/asam/scenariogeneration-0.16.7-py3-none-any.whl 'schemas/*' -d target/asam-schemas"
@@ -39,14 +40,14 @@ final class AsamSchemas {
     }
 
     /** OpenDRIVE 1.7: its core file includes the other six, so it is loaded by its path for them to resolve. */
-    static synchronized Schema openDrive() {
+    public static synchronized Schema openDrive() {
         if (openDrive == null) {
             openDrive = load("opendrive_17_core.xsd");
         }
         return openDrive;
     }
 
-    static synchronized Schema openScenario(ScenarioVersion version) {
+    public static synchronized Schema openScenario(ScenarioVersion version) {
         return OPEN_SCENARIO.computeIfAbsent(version, v -> load(switch (v) {
             case V1_0 -> "OpenSCENARIO_1_0.xsd";
             case V1_1 -> "OpenSCENARIO_1_1.xsd";
@@ -56,7 +57,7 @@ final class AsamSchemas {
     }
 
     /** Fails, naming {@code what} and the first few errors with their line and column, unless {@code xml} is valid. */
-    static void assertValid(Schema schema, String xml, String what) {
+    public static void assertValid(Schema schema, String xml, String what) {
         List<String> errors = errors(schema, xml);
         if (!errors.isEmpty()) {
             String more = errors.size() > ERRORS_SHOWN ? "\n  …" : "";

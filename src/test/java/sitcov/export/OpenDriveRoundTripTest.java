@@ -38,7 +38,7 @@ class OpenDriveRoundTripTest {
 
     private static synchronized List<Exported> exports() {
         if (exports == null) {
-            exports = ExportSeeds.upTo(200).mapToObj(MapGenerator::generate)
+            exports = ExportSeeds.upTo(100).mapToObj(MapGenerator::generate)
                     .map(m -> new Exported(m, OpenDriveModel.parse(OpenDrive.document(m)))).toList();
         }
         return exports;

@@ -25,7 +25,7 @@ import sitcov.world.WorldMap;
  */
 final class FolderExport {
     private static final String INDEX_HEADER = "row,replication,driver,map_index,external_seed,internal_seed,fault,"
-            + "new_accident,tick,seconds,x,y,road_file,scenario_file";
+            + "new_accident,tick,seconds,x,y,road_file,situation_file,run_file";
 
     /** A found run is recorded to 5 s after the accident that found it: what follows shows nothing more. */
     static final long AFTER_FAILURE_TICKS = 25;
@@ -103,8 +103,8 @@ final class FolderExport {
         for (ResultsRows.Row row : found) {
             String base = "row-" + row.number();
             WorldMap map = ResultsRows.worldMap(folder, row.map());
-            files.add(new ExportCommand.Planned(base + ".xodr", () -> sitcov.export.OpenDrive.document(map)));
-            files.add(new ExportCommand.Planned(base + ".xosc", () -> {
+            files.addAll(ExportCommand.mapFiles(base, map, version));
+            files.add(new ExportCommand.Planned(base + "-run.xosc", () -> {
                 JudgedMap judged = checked(row, map);
                 index.add(indexLine(row, judged, base));
                 long failure = judged.verdicts().get(0).newAccident().orElseThrow().tick();
@@ -114,8 +114,8 @@ final class FolderExport {
         }
         files.add(new ExportCommand.Planned(ExportCommand.INDEX, () -> String.join("\n", index) + "\n"));
         return new ExportCommand.Plan(files, "Exported the " + found.size() + " runs of " + folder
-                + " that found a fault to DIR (" + ExportCommand.INDEX + " lists them, each run's map and the accident"
-                + " that found it; each run is recorded to 5 s after that accident).");
+                + " that found a fault to DIR: each one's map, situation and faulty run (recorded to 5 s after the accident"
+                + " that found it); " + ExportCommand.INDEX + " lists them.");
     }
 
     /** The row judged again; it must give what runs.csv recorded, or the export stops. */
@@ -138,6 +138,7 @@ final class FolderExport {
                 Long.toString(row.map().internalSeed()), Integer.toString(verdict.fault().id()), a.type().name(),
                 Long.toString(a.tick()), String.format(java.util.Locale.ROOT, "%.1f", AsamFrame.seconds(a.tick())),
                 String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.x(a.x())),
-                String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.y(a.y())), base + ".xodr", base + ".xosc"));
+                String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.y(a.y())), base + ".xodr", base + ".xosc",
+                base + "-run.xosc"));
     }
 }

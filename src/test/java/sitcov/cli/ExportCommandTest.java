@@ -155,16 +155,20 @@ class ExportCommandTest {
             assertEquals(row[0], cells[header.indexOf("row")]);
             assertEquals(column(finding(), row, "new_accident"), cells[header.indexOf("new_accident")]);
             assertEquals(column(finding(), row, "external_seed"), cells[header.indexOf("external_seed")]);
-            parse(dir.resolve(cells[header.indexOf("road_file")]));
-            Document scenario = parse(dir.resolve(cells[header.indexOf("scenario_file")]));
-            // the accident that found the fault is among those the scenario declares, at the tick the index gives
+            String roadFile = cells[header.indexOf("road_file")];
+            parse(dir.resolve(roadFile));
+            Document situation = parse(dir.resolve(cells[header.indexOf("situation_file")]));
+            assertEquals(roadFile, text(situation, "/OpenSCENARIO/RoadNetwork/LogicFile/@filepath"));
+            Document scenario = parse(dir.resolve(cells[header.indexOf("run_file")]));
+            assertEquals(roadFile, text(scenario, "/OpenSCENARIO/RoadNetwork/LogicFile/@filepath"));
+            // the accident that found the fault is among those the recorded run declares, at the tick the index gives
             boolean declared = false;
             int count = Integer.parseInt(parameter(scenario, "accidentCount"));
             for (int k = 1; k <= count; k++) {
                 declared |= parameter(scenario, "accident" + k + "Type").equals(cells[header.indexOf("new_accident")])
                         && parameter(scenario, "accident" + k + "Tick").equals(cells[header.indexOf("tick")]);
             }
-            assertTrue(declared, index.get(i + 1) + ": its scenario declares no such accident at that tick");
+            assertTrue(declared, index.get(i + 1) + ": its recorded run declares no such accident at that tick");
         }
     }
 

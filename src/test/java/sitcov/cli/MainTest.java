@@ -43,7 +43,7 @@ class MainTest {
         CliRunner result = CliRunner.run("simulat");
 
         assertEquals(ExitCode.USAGE, result.exitCode());
-        assertTrue(result.err().startsWith("sitcov: unknown command 'simulat'; the commands are run, merge, report, replay, view, simulate,"),
+        assertTrue(result.err().startsWith("sitcov: unknown command 'simulat'; the commands are run, merge, report, replay, export, view, simulate,"),
                 result.err());
     }
 

@@ -76,6 +76,26 @@ class OpenScenarioRoundTripTest {
         failures.assertNone("a recorded run's document matches the run as watched");
     }
 
+    @Test
+    void recordingsOfFaultFreeRunsRetraceEveryVehicleIncludingThoseThatLeaveTheMapAndComeBack() {
+        Failures failures = new Failures();
+        int leaving = 0;
+        for (long seed : ExportSeeds.runs(6).toArray()) {
+            WorldMap map = MapGenerator.generate(seed);
+            Watched watched = watch(map, seed, Set.of());
+            leaving += (int) watched.samples().values().stream().filter(s -> s.stream().anyMatch(p -> p[3] == 0)).count();
+            RunRecording recording = RunRecording.of(map, seed, Set.of());
+            ScenarioModel m = ScenarioModel.parse(OpenScenario.recording(recording, "map-" + seed + ".xodr", ScenarioVersion.V1_3));
+            List<String> problems = new ArrayList<>(trajectoryProblems(watched, m));
+            problems.addAll(accidentProblems(watched, m));
+            for (String p : problems) {
+                failures.add(seed, p);
+            }
+        }
+        failures.assertNone("a fault-free run's recording matches the run as watched");
+        assertTrue(leaving > 0, "some moving car leaves the map in these runs, so its teleports are checked");
+    }
+
     // ---- the situation
 
     /** What differs in the header, the entities or where they start; the same for a situation and a recording. */

@@ -46,9 +46,4 @@ final class Frame {
         double d = Math.abs(Math.IEEEremainder(a - b, 2 * Math.PI));
         return Math.min(d, 2 * Math.PI - d);
     }
-
-    /** The centre of a vehicle's footprint from its front centre (sitcov frame), as sitcov anchors poses. */
-    static Vec2 footprintCentre(double frontX, double frontY, double bearing, double length) {
-        return new Vec2(frontX - Bearing.dx(bearing) * length / 2, frontY - Bearing.dy(bearing) * length / 2);
-    }
 }

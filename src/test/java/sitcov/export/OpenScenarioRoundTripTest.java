@@ -7,7 +7,6 @@ import static sitcov.export.Frame.METRE_TOLERANCE;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -200,9 +199,9 @@ class OpenScenarioRoundTripTest {
     private static Watched watch(WorldMap map, long internalSeed, Set<Fault> faults) {
         Map<String, List<double[]>> samples = new LinkedHashMap<>();
         StartPose start = map.layout().carStart().orElseThrow();
-        samples.put("ego", new ArrayList<>(List.of(sample(start, Dimensions.AUTONOMOUS_CAR_LENGTH))));
+        samples.put("ego", new ArrayList<>(List.of(sample(start, Dimensions.AUTONOMOUS_CAR_LENGTH, Dimensions.AUTONOMOUS_CAR_WIDTH))));
         for (int i = 0; i < map.movingCars().size(); i++) {
-            samples.put("moving" + i, new ArrayList<>(List.of(sample(map.movingCars().get(i), Dimensions.CAR_LENGTH))));
+            samples.put("moving" + i, new ArrayList<>(List.of(sample(map.movingCars().get(i), Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH))));
         }
         Map<Integer, String> movingById = new LinkedHashMap<>();
         RunResult result = Simulator.run(map, internalSeed, faults, (tick, run, detector) -> {
@@ -216,8 +215,8 @@ class OpenScenarioRoundTripTest {
         return new Watched(result, samples, movingById);
     }
 
-    private static double[] sample(StartPose pose, double length) {
-        Vec2 centre = pose.footprint(length, Dimensions.CAR_WIDTH).centre();
+    private static double[] sample(StartPose pose, double length, double width) {
+        Vec2 centre = pose.footprint(length, width).centre();
         return new double[] {centre.x(), centre.y(), pose.heading().bearing(), 1};
     }
 

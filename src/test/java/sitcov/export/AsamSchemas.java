@@ -22,15 +22,13 @@ import org.xml.sax.SAXParseException;
 
 /**
  * The ASAM schemas the export is checked against: OpenDRIVE 1.7 and OpenSCENARIO 1.0–1.3, as the
- * pinned scenariogeneration wheel ships them, fetched by .ci/run into target/asam-schemas/. Missing
+ * pinned scenariogeneration wheel ships them, fetched by .ci/fetch-asam-schemas (which .ci/run calls) into target/asam-schemas/. Missing
  * schemas skip the tests that need them, except under CI=true, where they fail naming the fetch (README,
  * "Export to OpenDRIVE and OpenSCENARIO"). Public for the export command's tests.
  */
 public final class AsamSchemas {
     static final Path DIR = Path.of("target", "asam-schemas");
-    static final String FETCH = "python3 -m pip download --no-deps scenariogeneration==0.16.7 -d target/asam"
-            + " && unzip -j -o target/asam/scenariogeneration-0.16.7-py3-none-any.whl 'schemas/*' -d target/asam-schemas"
-            + " (or run .ci/run, which does the same)";
+    static final String FETCH = "bash .ci/fetch-asam-schemas (from the repository root; it needs python3 and PyPI)";
     private static final int ERRORS_SHOWN = 5;
 
     private static Schema openDrive;

@@ -61,8 +61,13 @@ final class ExportCommand implements Command {
                 "--internal-seed", "--osc"), Set.of("--found", "--record"));
         ScenarioVersion version = version(options);
         Path folder = outFolder(options);
-        Plan plan = options.positional().isEmpty() ? MapExport.plan(options, version)
-                : FolderExport.plan(options, version);
+        Plan plan;
+        try {
+            plan = options.positional().isEmpty() ? MapExport.plan(options, version) : FolderExport.plan(options, version);
+        } catch (RowMismatch e) {
+            err.println("sitcov: export: " + e.getMessage() + " Nothing was written.");
+            return ExitCode.FAILURE;
+        }
         for (Planned p : plan.files()) {
             Path file = folder.resolve(p.name());
             if (Files.exists(file, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
@@ -77,9 +82,6 @@ final class ExportCommand implements Command {
             }
         } catch (IOException e) {
             err.println("sitcov: export: " + IoReason.of(e, folder) + "; files written before it are whole.");
-            return ExitCode.FAILURE;
-        } catch (RowMismatch e) {
-            err.println("sitcov: export: " + e.getMessage());
             return ExitCode.FAILURE;
         }
         out.println(plan.done().replace("DIR", folder.toString()));

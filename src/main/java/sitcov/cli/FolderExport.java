@@ -63,12 +63,9 @@ final class FolderExport {
         String base = "row-" + number;
         List<ExportCommand.Planned> files = new ArrayList<>(ExportCommand.mapFiles(base, map, version));
         Set<Fault> faults = row.fault().map(Set::of).orElse(Set.of());
-        ExportCommand.Planned run = ExportCommand.recording(base + "-run.xosc", base + ".xodr", map,
-                row.map().internalSeed(), faults, version);
-        files.add(new ExportCommand.Planned(run.name(), () -> {
-            checked(row, map);
-            return run.text().get();
-        }));
+        checked(row, map);
+        files.add(ExportCommand.recording(base + "-run.xosc", base + ".xodr", map, row.map().internalSeed(), faults,
+                version));
         if (row.fault().isPresent()) {
             files.add(ExportCommand.recording(base + "-run-fault-free.xosc", base + ".xodr", map,
                     row.map().internalSeed(), Set.of(), version));
@@ -104,13 +101,13 @@ final class FolderExport {
             String base = "row-" + row.number();
             WorldMap map = ResultsRows.worldMap(folder, row.map());
             files.addAll(ExportCommand.mapFiles(base, map, version));
-            files.add(new ExportCommand.Planned(base + "-run.xosc", () -> {
-                JudgedMap judged = checked(row, map);
-                index.add(indexLine(row, judged, base));
-                long failure = judged.verdicts().get(0).newAccident().orElseThrow().tick();
-                return OpenScenario.recording(RunRecording.of(map, row.map().internalSeed(), Set.of(row.fault().orElseThrow()))
-                        .until(failure + AFTER_FAILURE_TICKS), base + ".xodr", version);
-            }));
+            // every row is judged again before anything is written: a folder of another sitcov leaves nothing behind
+            JudgedMap judged = checked(row, map);
+            index.add(indexLine(row, judged, base));
+            long failure = judged.verdicts().get(0).newAccident().orElseThrow().tick();
+            files.add(new ExportCommand.Planned(base + "-run.xosc", () -> OpenScenario.recording(
+                    RunRecording.of(map, row.map().internalSeed(), Set.of(row.fault().orElseThrow()))
+                            .until(failure + AFTER_FAILURE_TICKS), base + ".xodr", version)));
         }
         files.add(new ExportCommand.Planned(ExportCommand.INDEX, () -> String.join("\n", index) + "\n"));
         return new ExportCommand.Plan(files, "Exported the " + found.size() + " runs of " + folder

@@ -28,18 +28,38 @@ final class RecordedRows {
                 + "\" --png FILE'");
     }
 
+    /** A run's summary as people read it: "TARGET_REACHED after 750 ticks, accidents: LEAVEROAD 1". */
+    static String words(RunSummary run) {
+        java.util.List<String> counts = new java.util.ArrayList<>();
+        for (sitcov.oracle.AccidentType t : sitcov.oracle.AccidentType.values()) {
+            long n = run.accidents().get(t.ordinal());
+            if (n > 0) {
+                counts.add(t.name() + " " + n);
+            }
+        }
+        return run.outcome() + " after " + run.ticks() + " ticks, " + (counts.isEmpty() ? "no accident"
+                : "accidents: " + String.join(", ", counts));
+    }
+
+    static String words(FaultOutcome o) {
+        return o.detection() + o.newAccident().map(t -> " by " + t).orElse("") + " (" + (o.reached() ? "reached" : "not reached")
+                + ", " + (o.effective() ? "effective from tick " + o.firstEffectiveTick() : "no effect") + "; the faulty run "
+                + words(o.run()) + ")";
+    }
+
     /** How the row, judged again, differs from what {@code runs.csv} recorded; empty when it is the same. */
     static Optional<String> differences(ResultsRows.Row row, JudgedMap judged) {
         RunSummary recorded = row.map().faultFree();
         RunSummary replayed = RunSummary.of(judged.faultFree());
         if (!recorded.equals(replayed)) {
-            return Optional.of("the fault-free run was recorded as " + recorded + ", the replay gives " + replayed);
+            return Optional.of("the fault-free run was recorded as " + words(recorded) + ", it now gives " + words(replayed));
         }
         if (row.outcome().isPresent()) {
             FaultOutcome was = row.outcome().get();
             FaultOutcome now = FaultOutcome.of(judged.verdicts().get(0));
             if (!was.equals(now)) {
-                return Optional.of("fault " + was.fault().id() + " was recorded as " + was + ", the replay gives " + now);
+                return Optional.of("fault " + was.fault().id() + " was recorded as " + words(was) + ", it now gives "
+                        + words(now));
             }
         }
         return Optional.empty();

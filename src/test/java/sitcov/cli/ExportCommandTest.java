@@ -22,6 +22,7 @@ import sitcov.export.AsamSchemas;
 import sitcov.export.OpenDrive;
 import sitcov.export.ScenarioVersion;
 import sitcov.results.ResultsFolder;
+import sitcov.results.SignedEdits;
 import sitcov.world.MapGenerator;
 
 /**
@@ -220,6 +221,33 @@ class ExportCommandTest {
         refused(kept + " already exists", "export", "--seed", "5", "--out", dir.toString());
         assertEquals("someone's own scenario\n", Files.readString(kept, StandardCharsets.UTF_8));
         assertEquals(List.of("map-5.xosc"), files(dir), "the road file was not written beside it either");
+    }
+
+    @Test
+    void aFolderWhoseFoundRowNoLongerRunsAsRecordedFailsBeforeWritingAnything() throws Exception {
+        Path copy = dir.resolve("tampered");
+        ResultsFolders.copy(ResultsFolders.tinyReference(), copy);
+        List<String> rows = Files.readAllLines(copy.resolve(ResultsFolder.RUNS));
+        int found = 1;
+        while (!rows.get(found).contains(",FOUND,")) {
+            found++;
+        }
+        int faultFree = found - 1;
+        while (!rows.get(faultFree).contains(",NONE,")) {
+            faultFree--;
+        }
+        // as another build of sitcov would have written it: the fault-free run took one tick more
+        SignedEdits.editRunsRow(copy, faultFree + 1, line -> {
+            String[] cells = line.split(",", -1);
+            cells[13] = Long.toString(Long.parseLong(cells[13]) + 1);
+            return String.join(",", cells);
+        });
+        Path out = dir.resolve("out");
+        CliRunner r = CliRunner.run("export", copy.toString(), "--found", "--out", out.toString());
+        assertEquals(ExitCode.FAILURE, r.exitCode(), r.err());
+        assertTrue(r.err().contains("does not run again as recorded: the fault-free run was recorded as")
+                && r.err().contains("Nothing was written."), r.err());
+        assertFalse(Files.exists(out), "not one file of the export, nor its folder");
     }
 
     private static void refused(String expected, String... args) {

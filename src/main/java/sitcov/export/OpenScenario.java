@@ -39,12 +39,12 @@ public final class OpenScenario {
         entities(xml, map);
         xml.open("Storyboard");
         xml.open("Init").open("Actions");
-        place(xml, RunRecording.EGO, car, ScenarioParts.Kind.CAR_UNDER_TEST.length());
+        place(xml, RunRecording.EGO, car, ScenarioParts.Kind.CAR_UNDER_TEST);
         parked(xml, layout);
         for (int i = 0; i < map.movingCars().size(); i++) {
             StartPose p = map.movingCars().get(i);
             xml.open("Private", "entityRef", RunRecording.movingName(i));
-            teleport(xml, p.position().x(), p.position().y(), p.heading().bearing(), Dimensions.CAR_LENGTH);
+            teleport(xml, p.position().x(), p.position().y(), p.heading().bearing(), ScenarioParts.Kind.MOVING);
             // moving cars set off from a standstill and speed up by sitcov's acceleration to its top speed
             ScenarioParts.speed(xml, Dynamics.MAX_SPEED / TICK, "linear", "rate", Dynamics.ACCELERATION / TICK / TICK);
             xml.close();
@@ -87,7 +87,7 @@ public final class OpenScenario {
         for (RunRecording.Track track : run.tracks()) {
             RunRecording.Sample first = track.samples().get(0);
             xml.open("Private", "entityRef", track.entity());
-            teleport(xml, first.x(), first.y(), first.bearing(), track.length());
+            teleport(xml, first.x(), first.y(), first.bearing(), ScenarioParts.Kind.of(track));
             xml.close();
         }
         parked(xml, map.layout());
@@ -176,22 +176,22 @@ public final class OpenScenario {
         for (ParkedCar p : layout.parkedCars()) {
             xml.open("Private", "entityRef", RunRecording.parkedName(p.id()));
             xml.open("PrivateAction").open("TeleportAction");
-            ScenarioParts.centrePose(xml, p.centre().x(), p.centre().y(), p.axis().bearing());
+            ScenarioParts.parkedPose(xml, p.centre().x(), p.centre().y(), p.axis().bearing());
             xml.close().close();
             xml.close();
         }
     }
 
-    private static void place(Xml xml, String entity, StartPose pose, double length) {
+    private static void place(Xml xml, String entity, StartPose pose, ScenarioParts.Kind kind) {
         xml.open("Private", "entityRef", entity);
-        teleport(xml, pose.position().x(), pose.position().y(), pose.heading().bearing(), length);
+        teleport(xml, pose.position().x(), pose.position().y(), pose.heading().bearing(), kind);
         ScenarioParts.speed(xml, 0, "step", "time", 0);
         xml.close();
     }
 
-    private static void teleport(Xml xml, double x, double y, double bearing, double length) {
+    private static void teleport(Xml xml, double x, double y, double bearing, ScenarioParts.Kind kind) {
         xml.open("PrivateAction").open("TeleportAction");
-        ScenarioParts.frontPose(xml, x, y, bearing, length);
+        ScenarioParts.vehiclePose(xml, x, y, bearing, kind);
         xml.close().close();
     }
 

@@ -6,11 +6,11 @@ import sitcov.world.Dimensions;
 
 /**
  * One vehicle of a recorded run as a maneuver group. Each stretch the vehicle spends on the map is
- * an event at its first tick: a teleport to where the stretch starts and a timed trajectory, a
- * vertex for each tick interpolation between vertices cannot give back ({@link KeptVertices}),
- * positions followed exactly. A moving car that leaves the map (to be replaced at a dead end later)
- * is teleported to a parking place of its own outside the world until it comes back: players such
- * as CARLA's ScenarioRunner know no way to hide a vehicle.
+ * an event at its first tick with a timed trajectory: a vertex for each tick interpolation between
+ * vertices cannot give back ({@link KeptVertices}), positions followed exactly. A moving car that
+ * leaves the map (to be replaced at a dead end later) is teleported, standing, to a parking place
+ * of its own outside the world, and teleported back where it re-enters: players such as CARLA's
+ * ScenarioRunner know no way to hide a vehicle.
  */
 final class RecordedTrack {
     /** Parking places lie in a row this far south of the world, this far apart. */
@@ -25,40 +25,62 @@ final class RecordedTrack {
 
     static void maneuverGroup(Xml xml, RunRecording.Track track, ScenarioVersion version, int parkingIndex) {
         List<RunRecording.Sample> samples = track.samples();
+        ScenarioParts.Kind kind = ScenarioParts.Kind.of(track);
         xml.open("ManeuverGroup", "maximumExecutionCount", "1", "name", track.entity());
         OpenScenario.actors(xml, track.entity());
         xml.open("Maneuver", "name", track.entity() + " as recorded");
         for (Stretch s : stretches(samples)) {
             String name = track.entity() + (s.first() == 0 ? " from the start" : " back at tick " + (s.first() - 1));
-            xml.open("Event", "name", name, "priority", "parallel");
-            xml.open("Action", "name", name + ": in place");
-            RunRecording.Sample first = samples.get(s.first());
-            xml.open("PrivateAction").open("TeleportAction");
-            ScenarioParts.frontPose(xml, first.x(), first.y(), first.bearing(), track.length());
-            xml.close().close();
-            xml.close();
-            if (s.last() > s.first()) {
-                xml.open("Action", "name", name + ": as recorded");
-                follow(xml, track, s, version);
-                xml.close();
-            }
-            ScenarioParts.timeTrigger(xml, "StartTrigger", "at sample " + s.first(), s.first() * Dimensions.TICK_SECONDS);
-            xml.close();
-            if (s.last() < samples.size() - 1) {
-                String away = track.entity() + " leaves the map at tick " + s.last();
-                xml.open("Event", "name", away, "priority", "parallel");
-                xml.open("Action", "name", away + ": parked outside the world");
+            double start = triggerTime(s.first());
+            if (s.first() > 0) {
+                // a teleport of its own: in the trajectory's event it would contend with it for the car
+                RunRecording.Sample first = samples.get(s.first());
+                xml.open("Event", "name", name + ": in place", "priority", "parallel");
+                xml.open("Action", "name", name + ": in place");
                 xml.open("PrivateAction").open("TeleportAction");
-                ScenarioParts.centrePose(xml, -PARKING_OFFSET * (parkingIndex + 1), Dimensions.WORLD_HEIGHT + PARKING_OFFSET,
-                        sitcov.geom.Compass.EAST.bearing());
+                ScenarioParts.vehiclePose(xml, first.x(), first.y(), first.bearing(), kind);
                 xml.close().close();
                 xml.close();
-                ScenarioParts.timeTrigger(xml, "StartTrigger", "at sample " + (s.last() + 1),
-                        (s.last() + 1) * Dimensions.TICK_SECONDS);
+                ScenarioParts.timeTrigger(xml, "StartTrigger", "at sample " + s.first(), start);
                 xml.close();
+            }
+            if (s.last() > s.first()) {
+                xml.open("Event", "name", name, "priority", "parallel");
+                xml.open("Action", "name", name + ": as recorded");
+                follow(xml, track, kind, s, version);
+                xml.close();
+                ScenarioParts.timeTrigger(xml, "StartTrigger", "at sample " + s.first(), start);
+                xml.close();
+            }
+            if (s.last() < samples.size() - 1) {
+                leave(xml, track.entity() + " leaves the map at tick " + s.last(), parkingIndex, triggerTime(s.last() + 1));
             }
         }
         xml.close();
+        xml.close();
+    }
+
+    /**
+     * When an event for sample {@code i} starts: half a tick early, since a player fires a time
+     * condition only once time has passed it, which would miss the sample itself.
+     */
+    private static double triggerTime(int sample) {
+        return Math.max(0, sample * Dimensions.TICK_SECONDS - Dimensions.TICK_SECONDS / 2);
+    }
+
+    /** Off the map: to its own parking place outside the world, standing (a player's controller would drive it on). */
+    private static void leave(Xml xml, String name, int parkingIndex, double time) {
+        xml.open("Event", "name", name, "priority", "parallel");
+        xml.open("Action", "name", name + ": parked outside the world");
+        xml.open("PrivateAction").open("TeleportAction");
+        ScenarioParts.worldPose(xml, -PARKING_OFFSET * (parkingIndex + 1), Dimensions.WORLD_HEIGHT + PARKING_OFFSET,
+                sitcov.geom.Compass.EAST.bearing());
+        xml.close().close();
+        xml.close();
+        xml.open("Action", "name", name + ": standing");
+        ScenarioParts.speed(xml, 0, "step", "time", 0);
+        xml.close();
+        ScenarioParts.timeTrigger(xml, "StartTrigger", "at the time it left", time);
         xml.close();
     }
 
@@ -82,7 +104,8 @@ final class RecordedTrack {
         return out;
     }
 
-    private static void follow(Xml xml, RunRecording.Track track, Stretch stretch, ScenarioVersion version) {
+    private static void follow(Xml xml, RunRecording.Track track, ScenarioParts.Kind kind, Stretch stretch,
+                               ScenarioVersion version) {
         xml.open("PrivateAction").open("RoutingAction").open("FollowTrajectoryAction");
         boolean wraps = version.wrapsTrajectories();
         if (wraps) {
@@ -94,7 +117,7 @@ final class RecordedTrack {
         for (int i : KeptVertices.of(samples)) {
             RunRecording.Sample s = samples.get(i);
             xml.startLine().open("Vertex", "time", Xml.seconds((stretch.first() + i) * Dimensions.TICK_SECONDS));
-            ScenarioParts.frontPose(xml, s.x(), s.y(), s.bearing(), track.length());
+            ScenarioParts.vehiclePose(xml, s.x(), s.y(), s.bearing(), kind);
             xml.close().endLine();
         }
         xml.close().close().close();

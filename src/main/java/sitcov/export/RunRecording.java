@@ -5,7 +5,6 @@ import java.util.List;
 import java.util.Set;
 import sitcov.control.Vehicle;
 import sitcov.faults.Fault;
-import sitcov.geom.Bearing;
 import sitcov.judge.RunObserver;
 import sitcov.judge.Simulator;
 import sitcov.oracle.AccidentDetector;
@@ -133,12 +132,6 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
             widths[track] = v.width();
             samples.get(track).add(new Sample(v.x(), v.y(), v.heading(), v.isActive()));
         }
-    }
-
-    /** The centre of a footprint anchored at its front centre: where the ASAM formats put a vehicle. */
-    static double[] centre(double x, double y, double bearing, double length) {
-        double half = length / 2;
-        return new double[] {x - Bearing.dx(bearing) * half, y - Bearing.dy(bearing) * half};
     }
 
     /** How long the recorded run lasted. */

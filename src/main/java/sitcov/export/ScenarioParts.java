@@ -1,6 +1,7 @@
 package sitcov.export;
 
 import java.util.List;
+import sitcov.geom.Bearing;
 import sitcov.vehicles.AutonomousCar;
 import sitcov.vehicles.Dynamics;
 import sitcov.vehicles.MovingCar;
@@ -10,13 +11,14 @@ import sitcov.world.Target;
 
 /**
  * The pieces every exported OpenSCENARIO document shares: its header, road network, vehicles,
- * positions, triggers and the stop at the Target. Each vehicle's position is the centre of its
- * footprint, its bounding box centred there.
+ * positions, triggers and the stop at the Target. Each vehicle's position is its rear axle, as
+ * the standard places vehicles; its bounding box's centre lies ahead of it.
  */
 final class ScenarioParts {
     /** Exports carry no clock time, so that the same map gives the same bytes; the header needs a date. */
     static final String FIXED_DATE = "2026-01-01T00:00:00";
     private static final double TICK = Dimensions.TICK_SECONDS;
+    private static final double FRONT_AXLE_BEHIND_FRONT = 0.8;
 
     private ScenarioParts() {
     }
@@ -32,6 +34,16 @@ final class ScenarioParts {
         static final Kind PARKED = new Kind("vehicle.lincoln.mkz_2020", Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH,
                 MovingCar.REAR_AXLE, false);
         static final Kind MOVING = PARKED;
+
+        /** The kind of a recorded track's vehicle. */
+        static Kind of(RunRecording.Track track) {
+            return track.entity().equals(RunRecording.EGO) ? CAR_UNDER_TEST : MOVING;
+        }
+
+        /** The footprint's centre ahead of the rear axle, the reference point OpenSCENARIO places a vehicle by. */
+        double centreAheadOfRearAxle() {
+            return rearAxleBehindFront - length / 2;
+        }
     }
 
     static void header(Xml xml, ScenarioVersion version, String description) {
@@ -55,11 +67,10 @@ final class ScenarioParts {
     }
 
     static void vehicle(Xml xml, String entity, Kind kind) {
-        double halfLength = kind.length() / 2;
         xml.open("ScenarioObject", "name", entity);
         xml.open("Vehicle", "name", kind.model(), "vehicleCategory", "car");
         xml.open("BoundingBox");
-        xml.empty("Center", "x", Xml.metres(0), "y", Xml.metres(0), "z", Xml.metres(0.75));
+        xml.empty("Center", "x", Xml.metres(kind.centreAheadOfRearAxle()), "y", Xml.metres(0), "z", Xml.metres(0.75));
         xml.empty("Dimensions", "width", Xml.metres(kind.width()), "length", Xml.metres(kind.length()),
                 "height", Xml.metres(1.5));
         xml.close();
@@ -68,9 +79,9 @@ final class ScenarioParts {
                 "maxAcceleration", Xml.metres(Dynamics.ACCELERATION / TICK / TICK),
                 "maxDeceleration", Xml.metres(Dynamics.BRAKING / TICK / TICK));
         xml.open("Axles");
-        double rear = halfLength - kind.rearAxleBehindFront();
-        axle(xml, "FrontAxle", Math.min(halfLength - 0.3, rear + 2.5));
-        axle(xml, "RearAxle", rear);
+        // positions are the rear axle's, so it sits at 0; the front axle 0.8 m behind the front
+        axle(xml, "FrontAxle", kind.rearAxleBehindFront() - FRONT_AXLE_BEHIND_FRONT);
+        axle(xml, "RearAxle", 0);
         xml.close();
         if (kind.underTest()) {
             // how ScenarioRunner tells the ego vehicle, the one a user's agent drives
@@ -88,13 +99,22 @@ final class ScenarioParts {
                 "trackWidth", Xml.metres(1.6), "positionX", Xml.metres(positionX), "positionZ", Xml.metres(0.3));
     }
 
-    /** A world position from a sitcov front-centre pose of a vehicle {@code length} long. */
-    static void frontPose(Xml xml, double x, double y, double bearing, double length) {
-        double[] centre = RunRecording.centre(x, y, bearing, length);
-        centrePose(xml, centre[0], centre[1], bearing);
+    /**
+     * A vehicle's world position from its sitcov pose (the front centre): its rear axle, the
+     * reference point OpenSCENARIO places vehicles by and players turn them about.
+     */
+    static void vehiclePose(Xml xml, double frontX, double frontY, double bearing, Kind kind) {
+        double back = kind.rearAxleBehindFront();
+        worldPose(xml, frontX - Bearing.dx(bearing) * back, frontY - Bearing.dy(bearing) * back, bearing);
     }
 
-    static void centrePose(Xml xml, double x, double y, double bearing) {
+    /** A parked car's world position from the centre of its footprint. */
+    static void parkedPose(Xml xml, double centreX, double centreY, double bearing) {
+        double ahead = Kind.PARKED.length() / 2;
+        vehiclePose(xml, centreX + Bearing.dx(bearing) * ahead, centreY + Bearing.dy(bearing) * ahead, bearing, Kind.PARKED);
+    }
+
+    static void worldPose(Xml xml, double x, double y, double bearing) {
         xml.open("Position");
         xml.empty("WorldPosition", "x", Xml.metres(AsamFrame.x(x)), "y", Xml.metres(AsamFrame.y(y)),
                 "h", Xml.angle(AsamFrame.heading(bearing)));
@@ -124,7 +144,8 @@ final class ScenarioParts {
     }
 
     static void timeCondition(Xml xml, String name, double seconds) {
-        xml.open("Condition", "name", name, "delay", "0", "conditionEdge", "rising");
+        // edge "none": a time already passed when the act starts (0 s) fires at once; a rising edge never would
+        xml.open("Condition", "name", name, "delay", "0", "conditionEdge", "none");
         xml.open("ByValueCondition");
         xml.empty("SimulationTimeCondition", "value", Xml.seconds(seconds), "rule", "greaterThan");
         xml.close().close();
@@ -132,8 +153,8 @@ final class ScenarioParts {
 
     /**
      * The storyboard's stop: the car under test on the Target (its front within sitcov's capture
-     * distance; a player measures from its reference point, so the tolerance allows for the half
-     * length between them), or else the time limit.
+     * distance; a player measures from its reference point, the rear axle, so the tolerance adds
+     * the distance between them), or else the time limit.
      */
     static void stopAtTargetOrTimeout(Xml xml, Target target, double timeoutSeconds) {
         xml.open("StopTrigger");
@@ -145,7 +166,7 @@ final class ScenarioParts {
         xml.close();
         xml.open("EntityCondition");
         xml.open("ReachPositionCondition", "tolerance",
-                Xml.metres(TargetArrival.CAPTURE_DISTANCE + Dimensions.AUTONOMOUS_CAR_LENGTH / 2));
+                Xml.metres(TargetArrival.CAPTURE_DISTANCE + Kind.CAR_UNDER_TEST.rearAxleBehindFront()));
         targetPosition(xml, target);
         xml.close().close().close().close();
         xml.close();

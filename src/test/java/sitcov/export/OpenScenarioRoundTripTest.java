@@ -19,6 +19,8 @@ import sitcov.judge.Simulator;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.RunResult;
+import sitcov.vehicles.AutonomousCar;
+import sitcov.vehicles.MovingCar;
 import sitcov.world.Dimensions;
 import sitcov.world.MapGenerator;
 import sitcov.world.ParkedCar;
@@ -119,10 +121,14 @@ class OpenScenarioRoundTripTest {
         }
         for (Map.Entry<String, Expected> e : expected.entrySet()) {
             ScenarioModel.Box box = m.entities().get(e.getKey());
-            if (box.centreX() != 0 || box.centreY() != 0 || Math.abs(box.length() - e.getValue().length()) > 1e-9
+            // the reference point is the rear axle (the standard's), so the box's centre lies ahead of it
+            double rearAxle = e.getKey().equals(RunRecording.EGO) ? AutonomousCar.REAR_AXLE : MovingCar.REAR_AXLE;
+            double ahead = rearAxle - e.getValue().length() / 2;
+            if (Math.abs(box.centreX() - ahead) > 1e-9 || box.centreY() != 0
+                    || Math.abs(box.length() - e.getValue().length()) > 1e-9
                     || Math.abs(box.width() - e.getValue().width()) > 1e-9) {
                 problems.add(e.getKey() + "'s bounding box is " + box + ", expected " + e.getValue().length() + " m × "
-                        + e.getValue().width() + " m about (0, 0)");
+                        + e.getValue().width() + " m about (" + ahead + ", 0)");
             }
             Pose at = m.initial().get(e.getKey());
             String wrong = at == null ? "it has no Init position" : e.getValue().mismatch(at);
@@ -308,12 +314,16 @@ class OpenScenarioRoundTripTest {
         return null;
     }
 
-    /** Null when it is teleported off the world as it leaves the map, and into place wherever a trajectory starts again. */
+    /**
+     * Null when it is teleported off the world as it leaves the map, and into place wherever a trajectory starts
+     * again. Such events start half a tick before the sample they are for (a player fires a time condition only once
+     * time has passed it, which would miss the sample itself).
+     */
     private static String teleportProblem(List<double[]> samples, List<ScenarioModel.Event> events) {
         for (int k = 1; k < samples.size(); k++) {
             if (samples.get(k)[3] == 0 && samples.get(k - 1)[3] == 1) {
                 double t = k * TICK_SECONDS;
-                boolean away = events.stream().anyMatch(ev -> Math.abs(ev.time() - t) <= 1e-6
+                boolean away = events.stream().anyMatch(ev -> Math.abs(ev.time() - (t - TICK_SECONDS / 2)) <= 1e-6
                         && ev.teleports().stream().anyMatch(OpenScenarioRoundTripTest::offTheWorld));
                 if (!away) {
                     return "it left the map after tick " + (k - 1) + " but no event at " + t + " s teleports it off the world";
@@ -323,7 +333,12 @@ class OpenScenarioRoundTripTest {
         for (ScenarioModel.Event ev : events) {
             for (List<Pose> segment : ev.trajectories()) {
                 Pose first = segment.get(0);
-                boolean placed = ev.teleports().stream()
+                if (first.time() > 0 && Math.abs(ev.time() - (first.time() - TICK_SECONDS / 2)) > 1e-6) {
+                    return "its trajectory from " + first.time() + " s starts at " + ev.time() + " s, not half a tick before";
+                }
+                // the teleport into place is an event of its own at the same time
+                boolean placed = events.stream().filter(other -> Math.abs(other.time() - ev.time()) <= 1e-6)
+                        .flatMap(other -> other.teleports().stream())
                         .anyMatch(p -> new Vec2(p.x(), p.y()).distanceTo(new Vec2(first.x(), first.y())) <= METRE_TOLERANCE);
                 if (first.time() > 0 && !placed) {
                     return "its trajectory from " + first.time() + " s starts with no teleport to its first vertex";

@@ -16,7 +16,11 @@ record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, B
                      Map<String, Pose> initial, Map<String, Double> initialSpeed, List<Event> events,
                      List<Pose> acquiredPositions, List<Pose> reachConditions, Map<String, String> parameters) {
 
-    /** A WorldPosition, and the time of its vertex when it is one (NaN otherwise). */
+    /**
+     * A WorldPosition, and the time of its vertex when it is one (NaN otherwise). A vehicle's poses are
+     * read as a player reads them: its reference point moved by its bounding box's centre, so that
+     * (x, y) is the centre of its footprint.
+     */
     record Pose(double time, double x, double y, double h) {
     }
 
@@ -52,7 +56,8 @@ record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, B
         for (Element p : Dom.children(Dom.child(Dom.child(storyboard, "Init"), "Actions"), "Private")) {
             String entity = Dom.text(p, "entityRef");
             for (Element t : Dom.descendants(p, "TeleportAction")) {
-                put(initial, entity, pose(Dom.child(Dom.child(t, "Position"), "WorldPosition"), Double.NaN));
+                put(initial, entity, centred(pose(Dom.child(Dom.child(t, "Position"), "WorldPosition"), Double.NaN),
+                        entities.get(entity)));
             }
             for (Element s : Dom.descendants(p, "AbsoluteTargetSpeed")) {
                 put(speeds, entity, Dom.number(s, "value"));
@@ -61,11 +66,15 @@ record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, B
         List<Event> events = new ArrayList<>();
         for (Element event : Dom.descendants(storyboard, "Event")) {
             List<Element> time = Dom.descendants(Dom.child(event, "StartTrigger"), "SimulationTimeCondition");
-            events.add(new Event(actor(event), Dom.text(event, "name"),
+            String actor = actor(event);
+            Box box = entities.get(actor);
+            events.add(new Event(actor, Dom.text(event, "name"),
                     time.isEmpty() ? Double.NaN : Dom.number(time.get(0), "value"),
                     Dom.descendants(event, "TeleportAction").stream()
-                            .map(t -> pose(Dom.child(Dom.child(t, "Position"), "WorldPosition"), Double.NaN)).toList(),
-                    Dom.descendants(event, "FollowTrajectoryAction").stream().map(ScenarioModel::vertices).toList()));
+                            .map(t -> centred(pose(Dom.child(Dom.child(t, "Position"), "WorldPosition"), Double.NaN), box))
+                            .toList(),
+                    Dom.descendants(event, "FollowTrajectoryAction").stream()
+                            .map(f -> vertices(f).stream().map(v -> centred(v, box)).toList()).toList()));
         }
         Map<String, String> parameters = new LinkedHashMap<>();
         Dom.optionalChild(root, "ParameterDeclarations").ifPresent(ps -> Dom.children(ps, "ParameterDeclaration")
@@ -109,6 +118,17 @@ record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, B
             out.add(pose(Dom.child(Dom.child(e, "Position"), "WorldPosition"), Double.NaN));
         }
         return out;
+    }
+
+    /** Where the footprint's centre is when the vehicle's reference point stands at {@code p}. */
+    private static Pose centred(Pose p, Box box) {
+        if (box == null) {
+            throw new AssertionError("a position is given for an entity that is not declared");
+        }
+        double cos = Math.cos(p.h());
+        double sin = Math.sin(p.h());
+        return new Pose(p.time(), p.x() + cos * box.centreX() - sin * box.centreY(),
+                p.y() + sin * box.centreX() + cos * box.centreY(), p.h());
     }
 
     private static Pose pose(Element w, double time) {

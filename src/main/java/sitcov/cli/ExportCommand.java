@@ -51,8 +51,8 @@ final class ExportCommand implements Command {
     record Planned(String name, Supplier<String> text) {
     }
 
-    /** What an export will write, and what to say once it is written. */
-    record Plan(List<Planned> files, String done) {
+    /** What an export will write, and what to say once it is written into a folder. */
+    record Plan(List<Planned> files, java.util.function.Function<Path, String> done) {
     }
 
     @Override
@@ -84,7 +84,7 @@ final class ExportCommand implements Command {
             err.println("sitcov: export: " + IoReason.of(e, folder) + "; files written before it are whole.");
             return ExitCode.FAILURE;
         }
-        out.println(plan.done().replace("DIR", folder.toString()));
+        out.println(plan.done().apply(folder));
         return ExitCode.OK;
     }
 
@@ -160,8 +160,8 @@ final class ExportCommand implements Command {
                 files.add(recording(name, base + ".xodr", map, internal, faults, version));
             }
             String note = map.layout().isRunnable() ? "" : " (no situation: the map has no Target or no car start)";
-            return new Plan(files, "Exported " + String.join(", ", files.stream().map(Planned::name).toList())
-                    + " to DIR" + note + ".");
+            return new Plan(files, to -> "Exported " + String.join(", ", files.stream().map(Planned::name).toList())
+                    + " to " + to + note + ".");
         }
 
         private static String stem(Path file) {

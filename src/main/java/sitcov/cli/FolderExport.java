@@ -70,7 +70,7 @@ final class FolderExport {
             files.add(ExportCommand.recording(base + "-run-fault-free.xosc", base + ".xodr", map,
                     row.map().internalSeed(), Set.of(), version));
         }
-        return new ExportCommand.Plan(files, "Exported row " + number + " of " + folder + " to DIR: "
+        return new ExportCommand.Plan(files, to -> "Exported row " + number + " of " + folder + " to " + to + ": "
                 + String.join(", ", files.stream().map(ExportCommand.Planned::name).toList()) + ".");
     }
 
@@ -110,8 +110,8 @@ final class FolderExport {
                             .until(failure + AFTER_FAILURE_TICKS), base + ".xodr", version)));
         }
         files.add(new ExportCommand.Planned(ExportCommand.INDEX, () -> String.join("\n", index) + "\n"));
-        return new ExportCommand.Plan(files, "Exported the " + found.size() + " runs of " + folder
-                + " that found a fault to DIR: each one's map, situation and faulty run (recorded to 5 s after the accident"
+        return new ExportCommand.Plan(files, to -> "Exported the " + found.size() + " runs of " + folder
+                + " that found a fault to " + to + ": each one's map, situation and faulty run (recorded to 5 s after the accident"
                 + " that found it); " + ExportCommand.INDEX + " lists them.");
     }
 

@@ -151,7 +151,9 @@ public final class NearMisses {
         double reach = Math.sqrt(hl * hl + hw * hw);
 
         for (int i = 0; i < parkedX.length; i++) {
-            double bound = Math.hypot(parkedX[i] - cx, parkedY[i] - cy) - reach
+            double px = parkedX[i] - cx;
+            double py = parkedY[i] - cy;
+            double bound = Math.sqrt(px * px + py * py) - reach
                     - Math.sqrt(parkedHl[i] * parkedHl[i] + parkedHw[i] * parkedHw[i]);
             if (bound < least[NearMiss.PARKED_GAP.ordinal()]) {
                 keep(NearMiss.PARKED_GAP, BoxGap.signedDistance(cx, cy, fx, fy, hl, hw,
@@ -229,7 +231,7 @@ public final class NearMisses {
             double ocy = other.y() - ohl * ofy;
             keep(NearMiss.TIME_TO_COLLISION, BoxGap.timeToContact(cx, cy, fx, fy, hl, hw, vx, vy,
                     ocx, ocy, ofx, ofy, ohl, ohw, other.speed() * ofx, other.speed() * ofy), tick);
-            double bound = Math.hypot(ocx - cx, ocy - cy) - reach - Math.sqrt(ohl * ohl + ohw * ohw);
+            double bound = Math.sqrt((ocx - cx) * (ocx - cx) + (ocy - cy) * (ocy - cy)) - reach - Math.sqrt(ohl * ohl + ohw * ohw);
             if (bound > 0 && bound >= otherCarRho && bound >= least[NearMiss.MOVING_GAP.ordinal()]) {
                 touching[i] = false;
                 continue;

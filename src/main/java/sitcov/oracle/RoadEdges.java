@@ -13,7 +13,7 @@ import sitcov.geom.Rect;
  * the nearest edge; negative when part of it is off, minus the larger of how far its worst corner is
  * from the road and how deep the road's edge reaches into it (a corner of the surface between two
  * roads can cut into a footprint whose four corners are all on the road). Worked out once per map;
- * asking allocates nothing.
+ * asking allocates nothing, and one instance serves one run at a time.
  */
 final class RoadEdges {
     private final double[] minX;
@@ -25,6 +25,8 @@ final class RoadEdges {
     private final double[] y1;
     private final double[] x2;
     private final double[] y2;
+    /** Scratch: each piece's distance from the footprint's centre this tick. */
+    private final double[] centreDistance;
 
     RoadEdges(List<Rect> surfaces) {
         int n = surfaces.size();
@@ -47,6 +49,7 @@ final class RoadEdges {
             addUncovered(i, minX[i], minY[i], maxY[i], -1, false, pieces);
             addUncovered(i, maxX[i], minY[i], maxY[i], 1, false, pieces);
         }
+        centreDistance = new double[pieces.size()];
         x1 = new double[pieces.size()];
         y1 = new double[pieces.size()];
         x2 = new double[pieces.size()];
@@ -107,17 +110,20 @@ final class RoadEdges {
             double across = k == 0 || k == 3 ? hw : -hw;
             worstOff = Math.max(worstOff, distanceToRoad(cx + along * fx + across * fy, cy + along * fy - across * fx));
         }
-        double nearest = Double.POSITIVE_INFINITY;
-        double deepest = worstOff;
+        // the footprint is no farther from a piece than its centre is, and no nearer than that less its
+        // reach: only pieces whose centre distance, less the reach, beats the nearest centre distance count
         double reach = Math.sqrt(hl * hl + hw * hw);
+        double bound = Double.POSITIVE_INFINITY;
         for (int k = 0; k < x1.length; k++) {
-            // a piece farther from the centre than the nearest so far plus the box's reach cannot be nearer
             double ox = Math.max(Math.max(x1[k] - cx, cx - x2[k]), 0);
             double oy = Math.max(Math.max(y1[k] - cy, cy - y2[k]), 0);
-            if (deepest == 0 && ox * ox + oy * oy > (nearest + reach) * (nearest + reach)) {
-                continue;
-            }
-            if (deepest > 0 && ox * ox + oy * oy > reach * reach) {
+            centreDistance[k] = Math.sqrt(ox * ox + oy * oy);
+            bound = Math.min(bound, centreDistance[k]);
+        }
+        double nearest = Double.POSITIVE_INFINITY;
+        double deepest = worstOff;
+        for (int k = 0; k < x1.length; k++) {
+            if (centreDistance[k] - reach > bound) {
                 continue;
             }
             double d = BoxGap.segmentSignedDistance(x1[k], y1[k], x2[k], y2[k], cx, cy, fx, fy, hl, hw);

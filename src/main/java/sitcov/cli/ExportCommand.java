@@ -83,6 +83,10 @@ final class ExportCommand implements Command {
         } catch (IOException e) {
             err.println("sitcov: export: " + IoReason.of(e, folder) + "; files written before it are whole.");
             return ExitCode.FAILURE;
+        } catch (IllegalStateException e) {
+            // a hand-made situation the formats cannot carry, such as two junction squares that touch
+            err.println("sitcov: export: cannot write this map: " + e.getMessage() + "; files written before it are whole.");
+            return ExitCode.FAILURE;
         }
         out.println(plan.done().apply(folder));
         return ExitCode.OK;

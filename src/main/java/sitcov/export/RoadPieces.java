@@ -111,6 +111,7 @@ final class RoadPieces {
                 }
             }
         }
-        throw new IllegalStateException("junction " + junction.id() + " has no road piece on its " + arm + " arm");
+        throw new IllegalStateException("junction " + junction.id() + " has no road between its square and the next on its "
+                + arm + " arm, and OpenDRIVE joins junctions only by roads");
     }
 }

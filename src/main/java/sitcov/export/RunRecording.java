@@ -34,7 +34,7 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
      */
     public RunRecording until(long lastTick) {
         int samples = (int) Math.min(tracks.get(0).samples().size(), lastTick + 2);
-        List<Track> cut = tracks.stream().map(t -> new Track(t.entity(), t.sitcovId(), t.length(), t.width(),
+        List<Track> cut = tracks.stream().map(t -> new Track(t.entity(), t.sitcovId(),
                 t.samples().subList(0, samples))).toList();
         return new RunRecording(map, internalSeed, faults, result, cut);
     }
@@ -63,7 +63,7 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
      *
      * @param sitcovId the vehicle's id in the run (the car under test is 0), as accidents name their other party
      */
-    public record Track(String entity, int sitcovId, double length, double width, List<Sample> samples) {
+    public record Track(String entity, int sitcovId, List<Sample> samples) {
         public Track {
             samples = List.copyOf(samples);
         }
@@ -78,8 +78,7 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
         RunResult result = Simulator.run(map, internalSeed, faults, recorder).result();
         List<Track> tracks = new ArrayList<>();
         for (int i = 0; i < recorder.samples.size(); i++) {
-            tracks.add(new Track(i == 0 ? EGO : movingName(i - 1), recorder.ids[i], recorder.lengths[i],
-                    recorder.widths[i], recorder.samples.get(i)));
+            tracks.add(new Track(i == 0 ? EGO : movingName(i - 1), recorder.ids[i], recorder.samples.get(i)));
         }
         return new RunRecording(map, internalSeed, faults, result, tracks);
     }
@@ -93,20 +92,16 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
         return "parked" + id;
     }
 
-    /** Collects the samples; the first tick also tells each vehicle's id and size. */
+    /** Collects the samples; the ticks also tell each vehicle's id. */
     private static final class Recorder implements RunObserver {
         private final List<List<Sample>> samples = new ArrayList<>();
         private final int[] ids;
-        private final double[] lengths;
-        private final double[] widths;
 
         Recorder(WorldMap map) {
             StartPose car = map.layout().carStart().orElseThrow(() ->
                     new IllegalArgumentException("map " + map.seed() + " has no start for the car, so no run"));
             int vehicles = 1 + map.movingCars().size();
             ids = new int[vehicles];
-            lengths = new double[vehicles];
-            widths = new double[vehicles];
             samples.add(new ArrayList<>(List.of(start(car))));
             for (StartPose p : map.movingCars()) {
                 samples.add(new ArrayList<>(List.of(start(p))));
@@ -128,8 +123,6 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
 
         private void keep(int track, Vehicle v) {
             ids[track] = v.id();
-            lengths[track] = v.length();
-            widths[track] = v.width();
             samples.get(track).add(new Sample(v.x(), v.y(), v.heading(), v.isActive()));
         }
     }

@@ -6,6 +6,8 @@ import sitcov.engine.SimState;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
 import sitcov.oracle.AccidentDetector;
+import sitcov.oracle.Margins;
+import sitcov.oracle.NearMisses;
 import sitcov.oracle.RunResult;
 import sitcov.vehicles.BuiltinCar;
 import sitcov.vehicles.Scene;
@@ -24,6 +26,7 @@ public final class LiveRun {
     private final FaultSwitchboard switchboard;
     private final Scene scene;
     private final AccidentDetector detector;
+    private final NearMisses nearMisses;
     private boolean ended;
 
     /** A run of the builtin car with {@code faults} switched on. */
@@ -41,11 +44,16 @@ public final class LiveRun {
         this.scene = Scene.start(map, state, switchboard, controller);
         this.detector = new AccidentDetector(scene.telemetry());
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
+        this.nearMisses = new NearMisses(scene.telemetry());
     }
 
     /** Runs one tick; false once the run has ended (Target reached, timeout, or stopped). */
     public boolean step() {
         boolean goesOn = state.step();
+        if (goesOn) {
+            // watched as a RunObserver watches, so the tick that ends the run is watched too
+            nearMisses.afterTick(scene.telemetry());
+        }
         if (!goesOn && !ended) {
             ended = true;
             scene.autonomousCar().end(detector.outcome() == null ? "STOPPED" : detector.outcome().name(), detector.ticks());
@@ -71,6 +79,11 @@ public final class LiveRun {
         return detector;
     }
 
+    /** How close the run has come to each accident so far. */
+    public NearMisses nearMisses() {
+        return nearMisses;
+    }
+
     SimState state() {
         return state;
     }
@@ -86,7 +99,7 @@ public final class LiveRun {
     /** How the run went so far (all of it, once {@link #step} returned false). */
     public RunRecord record() {
         RunResult result = new RunResult(map.seed(), internalSeed, detector.outcome(), detector.accidents(),
-                detector.excusedContacts(), detector.ticks());
+                detector.excusedContacts(), detector.ticks(), Margins.of(nearMisses));
         return new RunRecord(result, faults, switchboard.activations());
     }
 }

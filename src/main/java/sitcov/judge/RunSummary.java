@@ -1,22 +1,33 @@
 package sitcov.judge;
 
 import java.util.List;
+import java.util.Objects;
 import sitcov.oracle.AccidentType;
+import sitcov.oracle.Margins;
 import sitcov.oracle.Outcome;
 import sitcov.oracle.RunResult;
 
-/** What an experiment keeps of one simulated run: how it ended, its ticks and its accident events by type. */
-public record RunSummary(Outcome outcome, long ticks, List<Long> accidents) {
+/**
+ * What an experiment keeps of one simulated run: how it ended, its ticks, its accident events by
+ * type, and how close it came to each accident.
+ */
+public record RunSummary(Outcome outcome, long ticks, List<Long> accidents, Margins margins) {
     public RunSummary {
         accidents = List.copyOf(accidents);
         if (accidents.size() != AccidentType.values().length) {
             throw new IllegalArgumentException("a run summary counts each of the " + AccidentType.values().length
                     + " accident types, got " + accidents.size());
         }
+        Objects.requireNonNull(margins, "margins");
+    }
+
+    /** A summary whose margins were not measured. */
+    public RunSummary(Outcome outcome, long ticks, List<Long> accidents) {
+        this(outcome, ticks, accidents, Margins.UNKNOWN);
     }
 
     public static RunSummary of(RunResult r) {
-        return new RunSummary(r.outcome(), r.ticks(), List.copyOf(r.countsByType().values()));
+        return new RunSummary(r.outcome(), r.ticks(), List.copyOf(r.countsByType().values()), r.margins());
     }
 
     public long count(AccidentType type) {

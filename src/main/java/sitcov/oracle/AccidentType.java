@@ -27,6 +27,11 @@ public enum AccidentType {
         this.label = label;
     }
 
+    /** The name of its robustness ρ's column in runs.csv. */
+    public String robustnessColumn() {
+        return "rho_" + column();
+    }
+
     /** The name of its count's column in runs.csv. */
     public String column() {
         return name().toLowerCase(Locale.ROOT);

@@ -16,5 +16,10 @@ public enum NearMiss {
     /** Time to collision with a moving vehicle (ticks), both keeping their velocities; infinite when never closing. */
     TIME_TO_COLLISION,
     /** Post-encroachment time (ticks) at a T-junction's square between the car and a moving vehicle. */
-    POST_ENCROACHMENT
+    POST_ENCROACHMENT;
+
+    /** The name of its least value's column in runs.csv. */
+    public String column() {
+        return "near_" + name().toLowerCase(java.util.Locale.ROOT);
+    }
 }

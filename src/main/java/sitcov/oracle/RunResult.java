@@ -6,13 +6,21 @@ import java.util.Map;
 
 /**
  * The result of one run: how it ended, every accident event in order, the contacts the blame
- * rules excused, the ticks simulated, and both seeds that reproduce it.
+ * rules excused, the ticks simulated, both seeds that reproduce it, and how close it came to each
+ * accident ({@link Margins}: near misses, reported beside accidents and never counted as failures).
  */
 public record RunResult(long externalSeed, long internalSeed, Outcome outcome, List<Accident> accidents,
-                        Map<Blame, Integer> excusedContacts, long ticks) {
+                        Map<Blame, Integer> excusedContacts, long ticks, Margins margins) {
     public RunResult {
         accidents = List.copyOf(accidents);
         excusedContacts = Map.copyOf(excusedContacts);
+        java.util.Objects.requireNonNull(margins, "margins");
+    }
+
+    /** A result whose margins were not measured. */
+    public RunResult(long externalSeed, long internalSeed, Outcome outcome, List<Accident> accidents,
+                     Map<Blame, Integer> excusedContacts, long ticks) {
+        this(externalSeed, internalSeed, outcome, accidents, excusedContacts, ticks, Margins.UNKNOWN);
     }
 
     public boolean hasAccident() {

@@ -16,10 +16,18 @@ import java.util.Set;
  */
 public final class Columns {
     private final List<String> names;
+    /** Columns a file written before they existed may lack: read as blank. */
+    private final Set<String> optional;
     private final Map<String, Integer> index = new HashMap<>();
 
     public Columns(List<String> names) {
+        this(names, Set.of());
+    }
+
+    /** A table whose columns {@code optional} were added later: a file without them reads them blank. */
+    public Columns(List<String> names, Set<String> optional) {
         this.names = List.copyOf(names);
+        this.optional = Set.copyOf(optional);
         for (int i = 0; i < this.names.size(); i++) {
             if (index.put(this.names.get(i), i) != null) {
                 throw new IllegalArgumentException("the column " + this.names.get(i) + " is listed twice");
@@ -99,6 +107,7 @@ public final class Columns {
         List<String> found = List.of(header.split(",", -1));
         Set<String> missing = new LinkedHashSet<>(names);
         found.forEach(missing::remove);
+        missing.removeAll(optional);
         Set<String> unknown = new LinkedHashSet<>(found);
         names.forEach(unknown::remove);
         Set<String> twice = new LinkedHashSet<>();
@@ -126,7 +135,7 @@ public final class Columns {
         for (int i = 0; i < names.size(); i++) {
             position[i] = found.indexOf(names.get(i));
         }
-        return new Layout(position);
+        return new Layout(position, found.size());
     }
 
     private static String plural(Set<String> columns) {
@@ -136,9 +145,12 @@ public final class Columns {
     /** A file's header, matched to this table's columns. */
     public final class Layout {
         private final int[] position;
+        /** The file's columns. */
+        private final int width;
 
-        private Layout(int[] position) {
+        private Layout(int[] position, int width) {
             this.position = position;
+            this.width = width;
         }
 
         /**
@@ -148,14 +160,15 @@ public final class Columns {
          */
         public Line split(String line) {
             String[] values = line.split(",", -1);
-            if (values.length != position.length) {
-                throw new IllegalArgumentException("expected " + position.length + " columns, found " + values.length);
+            if (values.length != width) {
+                throw new IllegalArgumentException("expected " + width + " columns, found " + values.length);
             }
             return new Line(values, this);
         }
 
         private String get(String[] values, String column) {
-            return values[position[at(column)]];
+            int p = position[at(column)];
+            return p < 0 ? "" : values[p];
         }
     }
 

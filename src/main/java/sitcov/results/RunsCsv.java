@@ -12,6 +12,8 @@ import sitcov.judge.Detection;
 import sitcov.judge.FaultOutcome;
 import sitcov.judge.RunSummary;
 import sitcov.oracle.AccidentType;
+import sitcov.oracle.Margins;
+import sitcov.oracle.NearMiss;
 import sitcov.oracle.Outcome;
 
 /**
@@ -53,7 +55,21 @@ public final class RunsCsv {
             all.add(t.column());
         }
         all.addAll(FAULT_ONLY);
-        this.columns = new Columns(all);
+        List<String> margins = marginColumns();
+        all.addAll(margins);
+        this.columns = new Columns(all, java.util.Set.copyOf(margins));
+    }
+
+    /** The near-miss and robustness columns, last: a folder written before they were kept lacks them and reads them unknown. */
+    private static List<String> marginColumns() {
+        List<String> names = new ArrayList<>();
+        for (NearMiss m : NearMiss.values()) {
+            names.add(m.column());
+        }
+        for (AccidentType t : AccidentType.values()) {
+            names.add(t.robustnessColumn());
+        }
+        return names;
     }
 
     public Columns columns() {
@@ -97,6 +113,33 @@ public final class RunsCsv {
         for (AccidentType t : AccidentType.values()) {
             row.set(t.column(), r.accidents().get(t.ordinal()));
         }
+        Margins m = r.margins();
+        for (NearMiss n : NearMiss.values()) {
+            row.set(n.column(), margin(m.least(n)));
+        }
+        for (AccidentType t : AccidentType.values()) {
+            row.set(t.robustnessColumn(), margin(m.robustness(t)));
+        }
+    }
+
+    /** A margin as runs.csv writes it: {@link Margins#DECIMALS} decimals, "inf" never met, blank unknown. */
+    static String margin(double v) {
+        if (Double.isNaN(v)) {
+            return "";
+        }
+        if (Double.isInfinite(v)) {
+            return v > 0 ? "inf" : "-inf";
+        }
+        return String.format(Locale.ROOT, "%." + Margins.DECIMALS + "f", v);
+    }
+
+    static double margin(String text) {
+        return switch (text) {
+            case "" -> Double.NaN;
+            case "inf" -> Double.POSITIVE_INFINITY;
+            case "-inf" -> Double.NEGATIVE_INFINITY;
+            default -> Margins.kept(Double.parseDouble(text));
+        };
     }
 
     /**
@@ -160,7 +203,15 @@ public final class RunsCsv {
         for (AccidentType t : AccidentType.values()) {
             counts.add(row.longValue(t.column()));
         }
-        return new RunSummary(Outcome.valueOf(row.get("outcome")), row.longValue("ticks"), counts);
+        List<Double> near = new ArrayList<>();
+        for (NearMiss n : NearMiss.values()) {
+            near.add(margin(row.get(n.column())));
+        }
+        List<Double> rho = new ArrayList<>();
+        for (AccidentType t : AccidentType.values()) {
+            rho.add(margin(row.get(t.robustnessColumn())));
+        }
+        return new RunSummary(Outcome.valueOf(row.get("outcome")), row.longValue("ticks"), counts, new Margins(near, rho));
     }
 
     private static void check(boolean ok, String expected) {

@@ -127,7 +127,7 @@ class ReportCommandTest {
         dropColumns(older.resolve(ResultsFolder.RUNS), 2);
         dropColumns(older.resolve(ResultsFolder.DRIVERS), 1);
         dropColumns(older.resolve(ResultsFolder.TIMINGS), 1);
-        assertTrue(Files.readAllLines(older.resolve(ResultsFolder.RUNS)).get(0).endsWith(",paper_found"));
+        assertTrue(Files.readAllLines(older.resolve(ResultsFolder.RUNS)).get(0).endsWith(",rho_timeout"));
         Path expected = dir.resolve("expected");
         ResultsFolders.copy(older, expected);
         Files.delete(older.resolve(ResultsFolder.STATS));

@@ -18,6 +18,8 @@ import sitcov.judge.Detection;
 import sitcov.judge.FaultOutcome;
 import sitcov.judge.RunSummary;
 import sitcov.oracle.AccidentType;
+import sitcov.oracle.Margins;
+import sitcov.oracle.NearMiss;
 import sitcov.oracle.Outcome;
 
 class RunsCsvTest {
@@ -26,8 +28,11 @@ class RunsCsvTest {
     private static final RunsCsv CSV = new RunsCsv(CONFIG);
 
     static MapRun map(int index, MapId id) {
-        RunSummary safe = new RunSummary(Outcome.TARGET_REACHED, 321, List.of(0L, 0L, 0L, 0L, 0L));
-        RunSummary crash = new RunSummary(Outcome.TIMEOUT, 5000, List.of(0L, 1L, 2L, 0L, 1L));
+        double inf = Double.POSITIVE_INFINITY;
+        RunSummary safe = new RunSummary(Outcome.TARGET_REACHED, 321, List.of(0L, 0L, 0L, 0L, 0L), new Margins(
+                List.of(2.5, inf, 0.3, 0.8, 12.25, 40.0), List.of(inf, 2.5, 0.3, 0.8, 4679.0)));
+        RunSummary crash = new RunSummary(Outcome.TIMEOUT, 5000, List.of(0L, 1L, 2L, 0L, 1L), new Margins(
+                List.of(-0.05, inf, -0.1234, 0.5, 0.0, inf), List.of(inf, -0.05, -0.1234, 0.5, 0.0)));
         return new MapRun(0, "random", index, index * 3, id, 77, -5, 104, List.of(12.5, 200.0, 31.25), safe, List.of(
                 new FaultOutcome(Fault.TARGET_LANE_CHECK_SKIPPED, crash, true, true, 44, Detection.FOUND,
                         Optional.of(AccidentType.LEAVEROAD), true),
@@ -38,10 +43,37 @@ class RunsCsvTest {
     @Test
     void aBlockHasTheFaultFreeRowThenOneRowPerFaultAsWorkedOutByHand() {
         String block = CSV.block(map(2, new MapId.Seeded(77)));
-        assertEquals("0,random,2,6,seed:77,77,-5,104,12.500,200.000,31.250,NONE,TARGET_REACHED,321,0,0,0,0,0,,,,,,\n"
-                + "0,random,2,6,seed:77,77,-5,104,12.500,200.000,31.250,14,TIMEOUT,5000,0,1,2,0,1,true,true,44,FOUND,LEAVEROAD,true\n"
+        String safe = ",2.5000,inf,0.3000,0.8000,12.2500,40.0000,inf,2.5000,0.3000,0.8000,4679.0000";
+        assertEquals("0,random,2,6,seed:77,77,-5,104,12.500,200.000,31.250,NONE,TARGET_REACHED,321,0,0,0,0,0,,,,,,"
+                + safe + "\n"
+                + "0,random,2,6,seed:77,77,-5,104,12.500,200.000,31.250,14,TIMEOUT,5000,0,1,2,0,1,true,true,44,FOUND,LEAVEROAD,true"
+                + ",-0.0500,inf,-0.1234,0.5000,0.0000,inf,inf,-0.0500,-0.1234,0.5000,0.0000\n"
                 + "0,random,2,6,seed:77,77,-5,104,12.500,200.000,31.250,19,TARGET_REACHED,321,0,0,0,0,0,true,false,-1,"
-                + "REACHED_NO_EFFECT,,false\n", block);
+                + "REACHED_NO_EFFECT,,false" + safe + "\n", block);
+    }
+
+    @Test
+    void aFolderWrittenBeforeMarginsWereKeptReadsThemAsUnknown() {
+        int kept = NearMiss.values().length + AccidentType.values().length;
+        String text = CSV.header() + "\n" + CSV.block(map(0, new MapId.Seeded(77)));
+        StringBuilder old = new StringBuilder();
+        for (String line : text.split("\n")) {
+            String[] cells = line.split(",", -1);
+            old.append(String.join(",", List.of(cells).subList(0, cells.length - kept))).append('\n');
+        }
+        MapRun read = CSV.read(old.toString(), "old/runs.csv").get(0);
+        assertEquals(Margins.UNKNOWN, read.faultFree().margins());
+        assertEquals(Margins.UNKNOWN, read.faults().get(0).run().margins());
+        assertEquals(map(0, new MapId.Seeded(77)).faultFree().accidents(), read.faultFree().accidents());
+    }
+
+    @Test
+    void aKeptMarginReadsBackAsTheSameNumber() {
+        java.util.Random random = new java.util.Random(30);
+        for (int i = 0; i < 100_000; i++) {
+            double v = Margins.kept((random.nextDouble() - 0.3) * Math.pow(10, random.nextInt(12)));
+            assertEquals(v, RunsCsv.margin(RunsCsv.margin(v)), "seed 30, draw " + i);
+        }
     }
 
     @Test

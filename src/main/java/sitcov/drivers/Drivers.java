@@ -24,6 +24,7 @@ public final class Drivers implements DriverFactory {
         m.put("every-other", EveryOtherDriver::new);
         m.put("coverage-search", CoverageSearchDriver::new);
         m.put("fault-search", CoverageSearchDriver::faultSearch);
+        m.put("stress-search", StressSearchDriver::new);
         return new Drivers(m);
     }
 

@@ -1,0 +1,60 @@
+package sitcov.drivers;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import sitcov.coverage.GridDefinition;
+import sitcov.experiment.BudgetKind;
+import sitcov.experiment.DriverRun;
+import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.MapId;
+import sitcov.experiment.MapRun;
+import sitcov.experiment.ResultsCollector;
+import sitcov.faults.FaultSet;
+import sitcov.judge.FaultyRuns;
+
+class StressSearchDriverTest {
+    private static ExperimentConfig search(String faults) {
+        return new ExperimentConfig("stress", 42, 120, 1, FaultSet.parse(faults), BudgetKind.TICKS,
+                GridDefinition.paper(), List.of("stress-search"), List.of(), 120, FaultyRuns.UNTIL_VERDICT);
+    }
+
+    private static DriverRun run(String faults) {
+        return ResultsCollector.run(search(faults), Drivers.standard(), 1).get(0).of("stress-search");
+    }
+
+    /** What the search chose to run, and all it may see of it: the map, its cell and the fault-free run. */
+    private static List<String> choices(DriverRun run) {
+        return run.maps().stream().map(m -> m.map().text() + " " + m.externalSeed() + " " + m.candidate() + " "
+                + m.cell() + " " + m.faultFree()).toList();
+    }
+
+    @Test
+    void theSearchChoosesTheSameSituationsWhateverTheFaultsDoSoItSeesOnlyTheReference() {
+        DriverRun one = run("19");
+        DriverRun other = run("3,14");
+        assertNotEquals(one.maps().stream().map(MapRun::faults).toList(),
+                other.maps().stream().map(MapRun::faults).toList(), "the faults' outcomes differ");
+        assertEquals(choices(one), choices(other), "master seed 42");
+    }
+
+    @Test
+    void theSearchRunsSituationsItBuiltPaidForWithCandidatesAndMeasuresEachRunsMargins() {
+        DriverRun run = run("19");
+        long built = run.maps().stream().filter(m -> m.map() instanceof MapId.Situation).count();
+        assertTrue(built > 0, "no situation built in 120 candidates (master seed 42)");
+        assertTrue(run.maps().stream().filter(m -> m.map() instanceof MapId.Situation s)
+                .allMatch(m -> ((MapId.Situation) m.map()).name().startsWith("stress-r0-") && m.candidate() >= 0));
+        assertEquals(120, run.spend().candidates(), "every edit tried is paid for with a candidate");
+        assertTrue(run.maps().stream().allMatch(m -> m.faultFree().margins().known()), "every run's margins are measured");
+    }
+
+    @Test
+    void theSearchIsTheSameOnEveryRun() {
+        assertEquals(ResultsCollector.run(search("19"), Drivers.standard(), 1),
+                ResultsCollector.run(search("19"), Drivers.standard(), 2));
+    }
+}

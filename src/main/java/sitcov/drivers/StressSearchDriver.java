@@ -62,6 +62,8 @@ final class StressSearchDriver implements Driver {
         while (session.budgetLeft()) {
             if (archive.isEmpty() || step++ % EXPLORE_EVERY == 0) {
                 explore(session);
+            } else if (choose.nextBoolean() && hasFailures()) {
+                exploit(session, choose);
             } else {
                 anneal(session, choose);
             }
@@ -92,12 +94,14 @@ final class StressSearchDriver implements Driver {
         MapRun run = session.run("stress-r" + session.replication() + "-" + built++, child.get(), spent);
         boolean newFailure = newFailure(run);
         double stress = keep(run, child.get());
+        // a failure found before is worth less to the walk than a new one: it moves on from it
+        double walkStress = stress <= Stress.FAILED && !newFailure ? Stress.FAILED / 2 : stress;
         double temperature = HOT + (COLD - HOT) * session.budgetSpent();
         // the draw is made whatever the comparison, so the stream does not depend on it
         double u = choose.nextDouble();
-        if (stress < currentStress || u < Math.exp(-(stress - currentStress) / temperature)) {
+        if (walkStress < currentStress || u < Math.exp(-(walkStress - currentStress) / temperature)) {
             current = child.get();
-            currentStress = stress;
+            currentStress = walkStress;
 
         }
         if (stress < bestOfWalk || newFailure) {
@@ -105,6 +109,26 @@ final class StressSearchDriver implements Driver {
             stale = 0;
         } else {
             stale++;
+        }
+    }
+
+    private boolean hasFailures() {
+        return archive.values().stream().anyMatch(e -> e.stress() <= Stress.FAILED);
+    }
+
+    /** A failing elite, drawn evenly, edited: about half of a failure's edits fail too, many of them in other cells. */
+    private void exploit(DriverSession session, RandomGenerator choose) {
+        List<Elite> failing = archive.values().stream().filter(e -> e.stress() <= Stress.FAILED).toList();
+        WorldMap parent = failing.get(choose.nextInt(failing.size())).map();
+        Candidate spent = session.nextCandidate();
+        Optional<WorldMap> child = Optional.empty();
+        for (int draw = 0; draw < DRAWS && child.isEmpty(); draw++) {
+            child = AimedEdits.random(parent.layout(), choose).apply(parent);
+        }
+        if (child.isPresent() && child.get().layout().isRunnable()) {
+            MapRun run = session.run("stress-r" + session.replication() + "-" + built++, child.get(), spent);
+            newFailure(run);
+            keep(run, child.get());
         }
     }
 

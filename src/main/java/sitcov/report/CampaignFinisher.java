@@ -17,6 +17,7 @@ import sitcov.faults.Fault;
 import sitcov.figures.CampaignFigure;
 import sitcov.results.CampaignCsv;
 import sitcov.results.CampaignManifest;
+import sitcov.results.FolderLock;
 import sitcov.results.JournalFiles;
 import sitcov.results.Manifest;
 import sitcov.results.OutputFile;
@@ -48,6 +49,23 @@ public final class CampaignFinisher {
         OutputFile.writeString(folder.resolve(PAGE), page(a, verdict));
         manifest.complete(true).write(folder);
         return a;
+    }
+
+    /**
+     * Writes a complete campaign's own files again from its sub-folders, holding its lock meanwhile.
+     *
+     * @throws IllegalArgumentException when the campaign is incomplete or a sub-folder was changed by hand
+     * @throws IllegalStateException when a run holds the folder
+     */
+    public static CampaignAnalysis report(Path folder) throws IOException {
+        CampaignManifest manifest = CampaignManifest.read(folder);
+        if (!manifest.complete()) {
+            throw new IllegalArgumentException(folder + " is not complete; finish it with 'run --resume " + folder + "'");
+        }
+        try (FolderLock lock = FolderLock.claim(folder)) {
+            ResultsFolder.sweepTemporaries(folder);
+            return finish(folder, manifest);
+        }
     }
 
     /**

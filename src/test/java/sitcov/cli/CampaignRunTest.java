@@ -149,31 +149,54 @@ class CampaignRunTest {
         assertSame(reference(), one);
     }
 
-    @Test
-    void aCampaignKilledInTheMiddleOfAFaultResumesToTheSameBytes() throws Exception {
-        Path folder = dir.resolve("killed");
-        CampaignConfig campaign = Preset.read(Path.of(TINY), null, Drivers.standard()).campaign();
-        Files.createDirectories(folder);
-        new CampaignManifest(campaign, Version.current(), false).write(folder);
-        // the first fault's trials stopped as a kill would, after 5 maps
-        Fault first = campaign.faults().get(0);
-        ExperimentConfig config = campaign.trialsOf(first);
-        ResultsRecorder recorder = ResultsRecorder.create(folder.resolve(CampaignConfig.folderOf(first)),
+    /** Starts the campaign's trials of {@code fault} into its sub-folder as run does, stopped as a kill would after {@code maps} maps. */
+    private static void killed(CampaignConfig campaign, Path folder, Fault fault, int maps) throws Exception {
+        ExperimentConfig config = campaign.trialsOf(fault);
+        ResultsRecorder recorder = ResultsRecorder.create(folder.resolve(CampaignConfig.folderOf(fault)),
                 new Manifest(config, Version.current(), Shard.WHOLE, false, false), Map.of(), System::nanoTime);
         ExperimentRunner[] runner = new ExperimentRunner[1];
         int[] judged = {0};
         runner[0] = new ExperimentRunner(config, Drivers.standard(), Shard.WHOLE, recorder.journal(), 2, System::nanoTime,
                 List.of(recorder, ev -> {
-                    if (ev instanceof ExperimentEvent.MapJudged && ++judged[0] == 5) {
+                    if (ev instanceof ExperimentEvent.MapJudged && ++judged[0] == maps) {
                         runner[0].halt();
                     }
                 }));
-        assertFalse(runner[0].run(), "the run was meant to stop after 5 maps");
+        assertFalse(runner[0].run(), "the run was meant to stop after " + maps + " maps");
         recorder.close();
+    }
 
-        CliRunner r = CliRunner.run("run", "--resume", folder.toString(), "--threads", "2");
-        assertEquals(0, r.exitCode(), r.err());
-        assertSame(reference(), folder);
+    @Test
+    void aCampaignKilledInTheMiddleOfAFaultResumesToTheSameBytes() throws Exception {
+        CampaignConfig campaign = Preset.read(Path.of(TINY), null, Drivers.standard()).campaign();
+        // killed in its first fault (8, never found), and killed in its last (17, found within a few maps: the
+        // resumed trials replay the map that falsified them and must stop there again)
+        for (int f = 0; f < 2; f++) {
+            Path folder = dir.resolve("killed-" + f);
+            Files.createDirectories(folder);
+            new CampaignManifest(campaign, Version.current(), false).write(folder);
+            for (int before = 0; before < f; before++) {
+                String sub = CampaignConfig.folderOf(campaign.faults().get(before));
+                ResultsFolders.copy(reference().resolve(sub), folder.resolve(sub));
+            }
+            killed(campaign, folder, campaign.faults().get(f), f == 0 ? 5 : 3);
+            CliRunner r = CliRunner.run("run", "--resume", folder.toString(), "--threads", "2");
+            assertEquals(0, r.exitCode(), r.err());
+            assertSame(reference(), folder);
+        }
+    }
+
+    @Test
+    void aCampaignFolderWhoseManifestNoLongerMatchesItsFaultsIsNotReported() throws IOException {
+        Path folder = dir.resolve("edited");
+        ResultsFolders.copy(reference(), folder);
+        Path manifest = folder.resolve(CampaignManifest.FILE);
+        Files.writeString(manifest, Files.readString(manifest).replace("tick_budget=10000", "tick_budget=20000"));
+        byte[] before = Files.readAllBytes(folder.resolve("campaign.csv"));
+        CliRunner r = CliRunner.run("report", folder.toString());
+        assertEquals(ExitCode.USAGE, r.exitCode(), r.err());
+        assertTrue(r.err().contains("holds another experiment than this campaign's trials of fault 8"), r.err());
+        assertArrayEquals(before, Files.readAllBytes(folder.resolve("campaign.csv")), "nothing was rewritten");
     }
 
     @Test

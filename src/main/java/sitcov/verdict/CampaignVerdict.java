@@ -73,7 +73,8 @@ public final class CampaignVerdict {
         }
         int n = a.config().trials();
         String family = "Per fault, Fisher's exact test on trials falsified and the log-rank test on ticks to first failure ("
-                + tested + " tests, Holm-adjusted together; pairs that neither driver falsified are not tested)";
+                + tested + " tests, Holm-adjusted together; Fisher's test leaves out a fault that neither driver falsified or both"
+                + " did in every trial, the log-rank test one that neither falsified)";
         if (shown.isEmpty()) {
             return family + ": no difference shown for any fault; with " + n + " trials a driver even " + n + " of " + n
                     + " against 0 of " + n + " falsified gives Fisher p = " + VerdictText.p(FisherExact.twoSidedP(n, 0, 0, n))

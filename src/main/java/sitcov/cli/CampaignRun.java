@@ -87,6 +87,8 @@ final class CampaignRun {
                         + Version.current() + "; resume it with that version, or start the preset afresh.");
             }
             lock = FolderLock.claim(folder);
+            // what a kill while the campaign's own files were written left
+            ResultsFolder.sweepTemporaries(folder);
         } catch (IOException e) {
             throw new UsageException("run: cannot resume " + folder + ": " + IoReason.of(e, folder) + ".");
         } catch (IllegalArgumentException | IllegalStateException e) {

@@ -19,7 +19,7 @@ import sitcov.stats.KaplanMeier;
  * tick mark where a trial was censored (its budget spent, or it stopped, without a failure).
  */
 public final class CampaignFigure {
-    public static final String FILE = "fig-campaign-survival.png";
+    public static final String FILE = sitcov.results.ResultsFolder.CAMPAIGN_FIGURE;
     private static final int COLUMNS = 4;
     private static final int PANEL_W = 260;
     private static final int PANEL_H = 170;

@@ -32,7 +32,7 @@ import sitcov.verdict.VerdictText;
  * sub-folders' journals are read, so a run, a resumed run and a report write the same bytes.
  */
 public final class CampaignFinisher {
-    public static final String PAGE = "campaign.html";
+    public static final String PAGE = ResultsFolder.CAMPAIGN_PAGE;
 
     private CampaignFinisher() {
     }

@@ -13,9 +13,9 @@ import sitcov.analysis.CampaignTrial;
  * Numbers in full (the page rounds them); an empty cell is a value that does not exist.
  */
 public final class CampaignCsv {
-    public static final String TRIALS = "campaign.csv";
-    public static final String DRIVERS = "campaign-drivers.csv";
-    public static final String STATS = "campaign-stats.csv";
+    public static final String TRIALS = ResultsFolder.CAMPAIGN_TRIALS;
+    public static final String DRIVERS = ResultsFolder.CAMPAIGN_DRIVERS;
+    public static final String STATS = ResultsFolder.CAMPAIGN_STATS;
 
     private CampaignCsv() {
     }

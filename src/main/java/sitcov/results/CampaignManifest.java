@@ -24,7 +24,7 @@ import sitcov.judge.FaultyRuns;
  * against the one this one implies, so a campaign folder is resumed or reported from it alone.
  */
 public record CampaignManifest(CampaignConfig config, String version, boolean complete) {
-    public static final String FILE = "campaign.properties";
+    public static final String FILE = ResultsFolder.CAMPAIGN_MANIFEST;
     private static final String HEADER = "# sitcov campaign manifest";
 
     /** Whether {@code folder} holds a campaign (rather than one experiment). */

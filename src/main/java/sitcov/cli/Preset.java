@@ -13,6 +13,7 @@ import sitcov.coverage.GridDefinition;
 import sitcov.drivers.Drivers;
 import sitcov.experiment.AnalysisPlan;
 import sitcov.experiment.BudgetKind;
+import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.faults.FaultSet;
 import sitcov.judge.FaultyRuns;
@@ -20,14 +21,20 @@ import sitcov.results.IoReason;
 
 /**
  * An experiment preset: a properties file in {@code experiments/}, named by file or by name. A
- * preset with {@code sweep=} budgets is an effort sweep; otherwise it is a comparison.
+ * preset with {@code sweep=} budgets is an effort sweep; one with {@code protocol=campaign} a
+ * falsification campaign ({@code campaign}, and {@code config} null); otherwise it is a comparison.
  */
-record Preset(Path file, ExperimentConfig config) {
+record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
+    /** The keys only the suites' protocol takes, and those only a campaign takes. */
+    private static final List<String> SUITES_ONLY = List.of("candidates", "replications", "budget", "sweep");
+    private static final List<String> CAMPAIGN_ONLY = List.of("trials", "tick_budget");
+
     private static final Set<String> KEYS = keys();
 
     private static Set<String> keys() {
         Set<String> keys = new java.util.TreeSet<>(List.of("name", "master_seed", "candidates", "replications", "faults",
-                "budget", "faulty_runs", "grid", "description", "sweep", "drivers", "candidate_limit", "controller"));
+                "budget", "faulty_runs", "grid", "description", "sweep", "drivers", "candidate_limit", "controller",
+                "protocol", "trials", "tick_budget"));
         keys.addAll(AnalysisPlan.keys());
         return Set.copyOf(keys);
     }
@@ -66,10 +73,82 @@ record Preset(Path file, ExperimentConfig config) {
             throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage() + ".");
         }
         duplicateKeys(text, file);
+        String protocol = p.getProperty("protocol", "suites").strip();
+        if (protocol.equals("campaign")) {
+            if (replicationsOverride != null) {
+                p.setProperty("trials", replicationsOverride.toString());
+            }
+            return new Preset(file, null, campaign(p, file, masterSeedOverride, drivers));
+        }
+        if (!protocol.equals("suites")) {
+            throw new UsageException("run: " + file + ": protocol=" + protocol + " is not a protocol; use protocol=suites"
+                    + " (test suites compared, the default) or protocol=campaign (falsification campaigns).");
+        }
+        for (String key : CAMPAIGN_ONLY) {
+            if (p.containsKey(key)) {
+                throw new UsageException("run: " + file + ": " + key + "= belongs to a falsification campaign; add"
+                        + " protocol=campaign, or remove " + key + "= (the suites' budget is candidates= and budget=).");
+            }
+        }
         if (replicationsOverride != null) {
             p.setProperty("replications", replicationsOverride.toString());
         }
-        return new Preset(file, config(p, file, masterSeedOverride, drivers));
+        return new Preset(file, config(p, file, masterSeedOverride, drivers), null);
+    }
+
+    /** A campaign (README, "Campaigns: falsifying one version"): the suites' own keys are refused, not ignored. */
+    private static CampaignConfig campaign(Properties p, Path file, Long masterSeedOverride, Drivers known)
+            throws UsageException {
+        for (String key : p.stringPropertyNames()) {
+            if (!KEYS.contains(key)) {
+                throw new UsageException("run: " + file + ": unknown key '" + key + "'; the keys are "
+                        + KEYS.stream().sorted().toList() + ".");
+            }
+            if (SUITES_ONLY.contains(key) || AnalysisPlan.keys().contains(key)) {
+                throw new UsageException("run: " + file + ": " + key + "= belongs to the suites' protocol; a campaign"
+                        + " (protocol=campaign) is sized by trials= and tick_budget=: remove " + key + "=.");
+            }
+        }
+        String name = name(p, file);
+        try {
+            long seed = masterSeedOverride != null ? masterSeedOverride : Long.parseLong(required(p, "master_seed", file));
+            if (!p.containsKey("tick_budget")) {
+                throw new UsageException("run: " + file + ": protocol=campaign needs tick_budget=T, the simulated ticks one"
+                        + " trial of one driver may spend; add it (e.g. tick_budget=200000).");
+            }
+            long ticks = count(file, "tick_budget", p.getProperty("tick_budget"), Integer.MAX_VALUE);
+            int trials = count(file, "trials", required(p, "trials", file), ExperimentConfig.MAX_REPLICATIONS);
+            var faults = FaultSet.parse(p.getProperty("faults", "PAPER"));
+            if (faults.isEmpty()) {
+                throw new UsageException("run: " + file + ": faults=" + p.getProperty("faults").strip() + " leaves no fault"
+                        + " to falsify; name at least one, e.g. faults=ALL.");
+            }
+            String limit = p.getProperty("candidate_limit");
+            int candidateLimit = limit == null ? CampaignConfig.DEFAULT_CANDIDATE_LIMIT
+                    : count(file, "candidate_limit", limit, ExperimentConfig.MAX_CANDIDATES);
+            FaultyRuns faultyRuns = FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.UNTIL_VERDICT.key()).strip());
+            String gridFile = p.getProperty("grid");
+            GridDefinition grid = gridFile == null ? GridDefinition.paper() : GridDefinition.read(Path.of(gridFile.strip()));
+            String controller = Controllers.check(p.getProperty("controller", ExperimentConfig.BUILTIN).strip());
+            return new CampaignConfig(name, seed, List.copyOf(faults), drivers(p, file, known), trials, ticks,
+                    candidateLimit, grid, faultyRuns, controller);
+        } catch (IOException e) {
+            throw new UsageException("run: " + file + ": cannot read its grid: " + sitcov.results.IoReason.of(e) + ".");
+        } catch (NumberFormatException e) {
+            throw new UsageException("run: " + file + ": master_seed= needs a whole number, not '"
+                    + p.getProperty("master_seed", "").strip() + "'.");
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("run: " + file + ": " + e.getMessage() + ".");
+        }
+    }
+
+    private static String name(Properties p, Path file) throws UsageException {
+        String name = p.getProperty("name", file.getFileName().toString().replaceFirst("\\.properties$", "")).strip();
+        if (!name.matches("[A-Za-z0-9][A-Za-z0-9._-]*")) {
+            throw new UsageException("run: " + file + ": name=" + name + " must be letters, digits, '.', '_' and '-'"
+                    + " (it names the results folder).");
+        }
+        return name;
     }
 
     private static ExperimentConfig config(Properties p, Path file, Long masterSeedOverride, Drivers known)

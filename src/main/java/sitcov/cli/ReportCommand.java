@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 import sitcov.analysis.Summary;
+import sitcov.report.CampaignFinisher;
 import sitcov.report.ResultsFinisher;
 import sitcov.results.Manifest;
 import sitcov.results.ResultsFolder;
@@ -38,6 +39,9 @@ final class ReportCommand implements Command {
             throw new UsageException("report: name one results folder, e.g. 'report target/results/smoke-seed1'.");
         }
         Path folder = Path.of(options.positional().get(0));
+        if (sitcov.results.CampaignManifest.isCampaign(folder)) {
+            return campaign(folder, out, err);
+        }
         if (!Files.isRegularFile(folder.resolve(sitcov.results.ResultsFolder.MANIFEST))) {
             throw new UsageException("report: " + Options.shown(folder) + " is not a results folder (it has no "
                     + sitcov.results.ResultsFolder.MANIFEST + "); name the folder 'run' wrote.");
@@ -49,6 +53,21 @@ final class ReportCommand implements Command {
             }
             Summary summary = ResultsFinisher.report(folder);
             SummaryTable.print(out, manifest.config(), summary);
+            VerdictPrinter.print(out, folder);
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            throw new UsageException("report: " + e.getMessage() + ".");
+        } catch (IOException e) {
+            err.println("sitcov: report: could not write into " + folder + ": " + e.getMessage());
+            return ExitCode.FAILURE;
+        }
+        out.println("Results written again in " + folder);
+        return ExitCode.OK;
+    }
+
+    /** A campaign's own files, written again from its faults' sub-folders (README, "Campaigns: falsifying one version"). */
+    private static int campaign(Path folder, PrintStream out, PrintStream err) throws UsageException {
+        try {
+            CampaignFinisher.report(folder);
             VerdictPrinter.print(out, folder);
         } catch (IllegalArgumentException | IllegalStateException e) {
             throw new UsageException("report: " + e.getMessage() + ".");

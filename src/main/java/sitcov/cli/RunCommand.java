@@ -13,11 +13,13 @@ import java.util.Set;
 import java.util.stream.Stream;
 import sitcov.drivers.Drivers;
 import sitcov.control.ControllerSource;
+import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentRunner;
 import sitcov.experiment.Journal;
 import sitcov.experiment.Shard;
 import sitcov.report.ResultsRecorder;
+import sitcov.results.CampaignManifest;
 import sitcov.results.FolderLock;
 import sitcov.results.IoReason;
 import sitcov.results.Manifest;
@@ -68,6 +70,9 @@ final class RunCommand implements Command {
         }
         Preset preset = Preset.read(Preset.locate(options.positional().get(0)), options.seed("--seed").orElse(null),
                 options.count("--replications", 1, ExperimentConfig.MAX_REPLICATIONS).orElse(null), drivers);
+        if (preset.campaign() != null) {
+            return campaign(preset.campaign(), options, threads, out, err);
+        }
         ExperimentConfig config = preset.config();
         if (options.value("--controller").isPresent()) {
             config = config.withController(Controllers.check(options.value("--controller").get()));
@@ -98,6 +103,26 @@ final class RunCommand implements Command {
         return execute(recorder, controllers, folder, threads, "", out, err);
     }
 
+    /** A campaign (README, "Campaigns: falsifying one version"): run whole, each fault into its own sub-folder. */
+    private int campaign(CampaignConfig campaign, Options options, int threads, PrintStream out, PrintStream err)
+            throws UsageException {
+        if (options.has("--shard")) {
+            throw new UsageException("run: " + campaign.name() + " is a campaign, which runs whole; --shard splits the"
+                    + " suites' replications: drop --shard.");
+        }
+        CampaignConfig c = campaign;
+        if (options.value("--controller").isPresent()) {
+            c = new CampaignConfig(c.name(), c.masterSeed(), c.faults(), c.drivers(), c.trials(), c.tickBudget(),
+                    c.candidateLimit(), c.grid(), c.faultyRuns(), Controllers.check(options.value("--controller").get()));
+        }
+        if (options.has("--dry-run")) {
+            out.println(CampaignRun.plan(c, threads) + ": sound; a dry run, so nothing ran and nothing was written.");
+            return ExitCode.OK;
+        }
+        Path folder = folder(options, c.name(), c.masterSeed(), c.trials(), Shard.WHOLE);
+        return new CampaignRun(drivers, threads, out, err).start(c, folder);
+    }
+
     private static ResultsRecorder create(Path folder, Manifest manifest, Map<String, String> execution)
             throws UsageException {
         try {
@@ -121,6 +146,9 @@ final class RunCommand implements Command {
         if (folder.toString().isEmpty() || !Files.isDirectory(folder)) {
             throw new UsageException("run: --resume " + Options.shown(folder) + " is not a folder; name the results folder"
                     + " of the run to resume.");
+        }
+        if (CampaignManifest.isCampaign(folder)) {
+            return new CampaignRun(drivers, threads, out, err).resume(folder);
         }
         Manifest manifest;
         try {
@@ -227,6 +255,11 @@ final class RunCommand implements Command {
     }
 
     private static Path folder(Options options, ExperimentConfig config, Shard shard) throws UsageException {
+        return folder(options, config.name(), config.masterSeed(), config.replications(), shard);
+    }
+
+    private static Path folder(Options options, String name, long masterSeed, int replications, Shard shard)
+            throws UsageException {
         if (options.value("--out").isPresent()) {
             Path out = Path.of(options.value("--out").get());
             if (Files.isRegularFile(out) || (Files.isDirectory(out) && !holdsNothing(out))) {
@@ -237,8 +270,8 @@ final class RunCommand implements Command {
             }
             return out;
         }
-        Path base = Path.of("target", "results", config.name() + "-seed" + config.masterSeed()
-                + (options.has("--replications") ? "-reps" + config.replications() : "")
+        Path base = Path.of("target", "results", name + "-seed" + masterSeed
+                + (options.has("--replications") ? "-reps" + replications : "")
                 + (shard.isWhole() ? "" : "-shard" + shard.k() + "of" + shard.n()));
         try {
             Files.createDirectories(base.getParent());

@@ -25,6 +25,56 @@ sealed interface Budget {
     default void charged(long ticks) {
     }
 
+    /** The driver has judged {@code run} (after {@link #charged}). */
+    default void judged(MapRun run) {
+    }
+
+    /**
+     * A campaign trial's budget: {@code ticks} simulated ticks for every driver alike, ended early by
+     * the first map on which a fault is found under the differential oracle (the campaign's one fault).
+     * One instance per driver session, so its state is the session's.
+     */
+    final class FixedTicks implements Budget {
+        private final long ticks;
+        private final int candidateLimit;
+        private boolean falsified;
+
+        FixedTicks(long ticks, int candidateLimit) {
+            this.ticks = ticks;
+            this.candidateLimit = candidateLimit;
+        }
+
+        @Override
+        public int candidateLimit() {
+            return candidateLimit;
+        }
+
+        @Override
+        public StopReason atLimit() {
+            return StopReason.CANDIDATE_LIMIT;
+        }
+
+        @Override
+        public StopReason spentOut() {
+            return falsified ? StopReason.FALSIFIED : StopReason.TICKS;
+        }
+
+        @Override
+        public boolean left(long spent, long elapsedNanos, Runnable checkHalt) {
+            return !falsified && spent < ticks;
+        }
+
+        @Override
+        public double share(int drawn, long spent, long elapsedNanos) {
+            return falsified ? 1 : (double) spent / ticks;
+        }
+
+        @Override
+        public void judged(MapRun run) {
+            falsified |= run.faults().stream().anyMatch(f -> f.found(sitcov.judge.Notion.DIFFERENTIAL));
+        }
+    }
+
     /** The leading driver's budget: {@code count} candidates; it tells the {@code lead} what it spends as it goes. */
     record Candidates(int count, Lead lead) implements Budget {
         @Override

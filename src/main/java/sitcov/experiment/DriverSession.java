@@ -156,6 +156,7 @@ public final class DriverSession {
         ticks += run.ticks();
         cells.add(run.cell());
         budget.charged(ticks);
+        budget.judged(run);
         host.emit(new ExperimentEvent.MapJudged(run, built, j.replayed(), j.mapNanos(), j.driverNanos(), driverIndex,
                 progress()));
         return run;

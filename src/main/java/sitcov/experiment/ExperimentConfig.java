@@ -14,11 +14,14 @@ import sitcov.judge.FaultyRuns;
  * {@code candidates} candidates; each later driver gets the same budget of the given kind (and never
  * draws more than {@code candidateLimit}). A sweep ({@code sweep} not empty): the same, once per
  * candidate budget of the sweep and map set, with {@code replications} map sets per budget.
- * {@code analysis} declares how a comparison's results are judged.
+ * {@code analysis} declares how a comparison's results are judged. A campaign's trials of one fault
+ * (budget {@code fixed-ticks}): every driver gets {@code tickBudget} ticks per replication (0 for
+ * every other budget), with {@code candidates} only its safety limit.
  */
 public record ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
                                BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
-                               int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis, String controller) {
+                               int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis, String controller,
+                               long tickBudget) {
     /** The controller an experiment tests unless its preset names another. */
     public static final String BUILTIN = "builtin";
 
@@ -64,9 +67,25 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
                     + " are not among the drivers " + drivers);
         }
         Objects.requireNonNull(controller, "controller");
+        if ((budget == BudgetKind.FIXED_TICKS) != (tickBudget > 0)) {
+            throw new IllegalArgumentException("a tick budget goes with the fixed-ticks budget of a campaign, and only"
+                    + " with it (got budget " + budget.key() + ", tick budget " + tickBudget + ")");
+        }
+        if (budget == BudgetKind.FIXED_TICKS && (faults.size() != 1 || !sweep.isEmpty())) {
+            throw new IllegalArgumentException("a campaign's trials falsify one fault and sweep nothing, got faults "
+                    + faults + " and sweep " + sweep);
+        }
         faults = Set.copyOf(faults);
         drivers = List.copyOf(drivers);
         sweep = List.copyOf(sweep);
+    }
+
+    /** Any budget but a campaign's fixed ticks. */
+    public ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
+                            BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
+                            int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis, String controller) {
+        this(name, masterSeed, candidates, replications, faults, budget, grid, drivers, sweep, candidateLimit, faultyRuns,
+                analysis, controller, 0);
     }
 
     /** Testing the builtin car. */
@@ -80,7 +99,7 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
     /** The same experiment testing the controller {@code spec} names ({@code builtin} or {@code exec:COMMAND ARGS…}). */
     public ExperimentConfig withController(String spec) {
         return new ExperimentConfig(name, masterSeed, candidates, replications, faults, budget, grid, drivers, sweep,
-                candidateLimit, faultyRuns, analysis, spec);
+                candidateLimit, faultyRuns, analysis, spec, tickBudget);
     }
 
     /** The default analysis: distinct faults found, the first driver against the second, default margins. */

@@ -78,7 +78,7 @@ public final class ExperimentRunner {
         // under the ticks budget a replication's later drivers run beside its first, which changes no
         // result and keeps every core busy however few replications a shard has; under the wall-clock
         // budget they run after it, as in the paper, each with a core of its own
-        boolean beside = config.budget() == BudgetKind.TICKS;
+        boolean beside = config.budget() != BudgetKind.WALL_CLOCK;
         ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, Math.min(threads, todo.size() * (beside ? drivers : 1))));
         try {
             List<Future<?>> futures = new ArrayList<>();

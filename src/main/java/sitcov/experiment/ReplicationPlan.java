@@ -13,6 +13,7 @@ final class ReplicationPlan {
     private final PlannedReplication replication;
     private final BudgetKind kind;
     private final int candidateLimit;
+    private final long tickBudget;
     private final Lead lead = new Lead();
     private final SharedMaps shared;
     private final AtomicInteger driversLeft;
@@ -21,6 +22,7 @@ final class ReplicationPlan {
         this.replication = replication;
         this.kind = config.budget();
         this.candidateLimit = config.candidateLimit();
+        this.tickBudget = config.tickBudget();
         this.shared = new SharedMaps(replication.index());
         this.driversLeft = new AtomicInteger(config.drivers().size());
     }
@@ -36,7 +38,8 @@ final class ReplicationPlan {
 
     /** Whether the driver at {@code driverIndex} in the preset's order leads the replication. */
     boolean leads(int driverIndex) {
-        return driverIndex == 0;
+        // a campaign's trial has no leader: every driver gets the same fixed ticks
+        return driverIndex == 0 && kind != BudgetKind.FIXED_TICKS;
     }
 
     /** The budget of the driver at {@code driverIndex}. */
@@ -47,6 +50,7 @@ final class ReplicationPlan {
         return switch (kind) {
             case TICKS -> new Budget.TicksOfLead(lead, candidateLimit);
             case WALL_CLOCK -> new Budget.WallClockOfLead(lead, candidateLimit);
+            case FIXED_TICKS -> new Budget.FixedTicks(tickBudget, candidateLimit);
         };
     }
 

@@ -16,6 +16,9 @@ import sitcov.engine.RandomStreams;
  *   {@code mix(M, "internal-seed:situation:" + name)};</li>
  * <li>the map itself, and everything random in a run, come from the external and internal seeds'
  *   own named streams ({@link sitcov.world.MapGenerator}, {@link sitcov.engine.SimState});</li>
+ * <li>the campaign of fault f (README, "Campaigns: falsifying one version") is an experiment of its
+ *   own whose master seed is {@code mix(M, "campaign-fault-" + f)}, every rule above applied to it,
+ *   so the trials of different faults read different candidates;</li>
  * <li>a driver's own choices (a search's: which situation to edit, how) come from stream
  *   {@code choices:DRIVER} of {@code M} derived by the replication's label;</li>
  * <li>the analysis of the results (bootstrap resamples, permutations) draws from stream
@@ -53,6 +56,11 @@ public final class SeedPlan {
     /** The randomness of one analysis of the results, e.g. {@code "bootstrap"} or {@code "cell-permutations"}. */
     public static RandomGenerator analysis(long masterSeed, String purpose) {
         return new RandomStreams(masterSeed).derive("analysis").stream(purpose);
+    }
+
+    /** The master seed of the campaign for fault {@code faultId}: its trials' candidates and internal seeds derive from it. */
+    public static long campaignSeed(long masterSeed, int faultId) {
+        return RandomStreams.mix(masterSeed, "campaign-fault-" + faultId);
     }
 
     /** The internal seed a map runs with: fixed by the master seed and the map, whichever driver runs it. */

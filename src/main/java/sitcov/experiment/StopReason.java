@@ -10,6 +10,8 @@ public enum StopReason {
     WALL_CLOCK("wall-clock"),
     /** A later driver drew {@code candidate_limit} candidates before spending its budget (it ran too few maps). */
     CANDIDATE_LIMIT("candidate-limit"),
+    /** A campaign's trial judged a map that found its fault. */
+    FALSIFIED("falsified"),
     /** The driver ended its share before its budget was spent (it had nothing left to run). */
     DRIVER("driver");
 

@@ -19,7 +19,7 @@ import sitcov.verdict.PairSummary;
  * shows exactly what the files hold.
  */
 final class HtmlReport {
-    private static final String CSS = """
+    static final String CSS = """
             body{font-family:system-ui,-apple-system,'Segoe UI',sans-serif;max-width:1100px;margin:0 auto;padding:1em;\
             color:#1e1e1e;line-height:1.45}
             h1{font-size:1.6em;margin-bottom:.2em}h2{margin-top:1.6em;border-bottom:1px solid #ccc}h3{margin:1.2em 0 .3em}

@@ -89,7 +89,11 @@ public final class ResultsFinisher {
         List<ReplicationResult> results = results(manifest, journal);
         JournalFiles.write(folder, manifest, journal);
         Summary summary = new Summary(config, results);
-        if (config.isSweep()) {
+        if (config.budget() == sitcov.experiment.BudgetKind.FIXED_TICKS) {
+            // one fault's trials of a campaign: the campaign's folder analyses them with the other faults'
+            // (CampaignFinisher); the suites' tables would compare drivers on maps they were not meant to share
+            return summary;
+        } else if (config.isSweep()) {
             SweepReport.write(config, summary, folder);
         } else {
             ResultsTables tables = new ResultsTables(config, summary);

@@ -94,6 +94,9 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         m.put("faults", FaultSet.format(c.faults()));
         m.put("budget", c.budget().key());
         m.put("candidate_limit", Integer.toString(c.candidateLimit()));
+        if (c.tickBudget() > 0) {
+            m.put("tick_budget", Long.toString(c.tickBudget()));
+        }
         m.put("faulty_runs", c.faultyRuns().key());
         if (!c.controller().equals(ExperimentConfig.BUILTIN)) {
             m.put("controller", c.controller());
@@ -167,7 +170,8 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
                     FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.TO_END.key())),
                     // folders written before the analysis was declared are judged by its defaults
                     AnalysisPlan.read(p::getProperty, drivers),
-                    p.getProperty("controller", ExperimentConfig.BUILTIN));
+                    p.getProperty("controller", ExperimentConfig.BUILTIN),
+                    Long.parseLong(p.getProperty("tick_budget", "0").strip()));
             Shard shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
             return new Manifest(config, required(p, "sitcov_version"), shard,
                     Boolean.parseBoolean(required(p, COMPLETE)), Boolean.parseBoolean(p.getProperty("resumed", "false")),

@@ -58,13 +58,22 @@ public final class ResultsFolder {
     /** Held by the run writing the folder; gone when it ends (a killed run leaves it, unlocked). */
     public static final String LOCK = ".sitcov.lock";
 
+    /** A campaign's own files, at the top of its folder (README, "Campaigns: falsifying one version"). */
+    public static final String CAMPAIGN_MANIFEST = "campaign.properties";
+    public static final String CAMPAIGN_TRIALS = "campaign.csv";
+    public static final String CAMPAIGN_DRIVERS = "campaign-drivers.csv";
+    public static final String CAMPAIGN_STATS = "campaign-stats.csv";
+    public static final String CAMPAIGN_FIGURE = "fig-campaign-survival.png";
+    public static final String CAMPAIGN_PAGE = "campaign.html";
+
     /** Files whose content depends on how fast the machine was. */
     public static final List<String> TIMED = List.of(TIMINGS, EXECUTION, FIG3_TIME);
 
     /** Every file name sitcov writes at the top of a results folder. */
     private static final List<String> NAMES = List.of(RUNS, DRIVERS, TIMINGS, MANIFEST, EXECUTION, GRID, SUMMARY, TABLE2,
             COVERAGE_CURVE, FIG2, FIG3, FIG3_TIME, STATS, VERDICT, DISCOVERY, CELL_FAULTS, UNIFORMITY, REPORT,
-            FIG_MEASURES, FIG_DISCOVERY, SWEEP, FIG4);
+            FIG_MEASURES, FIG_DISCOVERY, SWEEP, FIG4, CAMPAIGN_MANIFEST, CAMPAIGN_TRIALS, CAMPAIGN_DRIVERS, CAMPAIGN_STATS,
+            CAMPAIGN_FIGURE, CAMPAIGN_PAGE);
 
     /**
      * The temporary files {@link OutputFile} names ({@code .NAME<digits>.tmp}) for the files sitcov

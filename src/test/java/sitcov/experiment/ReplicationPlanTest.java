@@ -26,6 +26,51 @@ class ReplicationPlanTest {
         return new Journal.Finished(new DriverSpend(0, "lead", 12, 3, ticks, 2, StopReason.CANDIDATES), nanos);
     }
 
+    /** A map of 100 ticks fault-free and 50 with fault 19, which the faulty run found or did not. */
+    private static MapRun map(boolean found) {
+        List<Long> none = java.util.Collections.nCopies(sitcov.oracle.AccidentType.values().length, 0L);
+        sitcov.judge.RunSummary faultFree = new sitcov.judge.RunSummary(sitcov.oracle.Outcome.TARGET_REACHED, 100, none);
+        sitcov.judge.RunSummary faulty = new sitcov.judge.RunSummary(sitcov.oracle.Outcome.STOPPED_AT_VERDICT, 50, none);
+        sitcov.judge.FaultOutcome outcome = new sitcov.judge.FaultOutcome(sitcov.faults.Fault.ofId(19), faulty, true, true,
+                3, found ? sitcov.judge.Detection.FOUND : sitcov.judge.Detection.EFFECT_NO_FAILURE, java.util.Optional.empty(),
+                found);
+        return new MapRun(0, "second", 0, 0, new MapId.Seeded(1), 1, 2, 0, List.of(), faultFree, List.of(outcome));
+    }
+
+    @Test
+    void inACampaignsTrialNoDriverLeadsAndEachSpendsTheFixedTicksUntilItsFirstFind() {
+        ExperimentConfig config = new ExperimentConfig("trial", 5, 40, 1, FaultSet.parse("19"), BudgetKind.FIXED_TICKS,
+                GridDefinition.paper(), List.of("first", "second"), List.of(), 40, FaultyRuns.UNTIL_VERDICT,
+                AnalysisPlan.defaults(List.of("first", "second")), ExperimentConfig.BUILTIN, 300);
+        ReplicationPlan plan = new ReplicationPlan(config.plan().get(0), config);
+        assertFalse(plan.leads(0), "no driver leads a trial");
+        Budget first = plan.budget(0);
+        Budget second = plan.budget(1);
+        assertInstanceOf(Budget.FixedTicks.class, first);
+        assertEquals(40, first.candidateLimit());
+        first.judged(map(false));
+        assertTrue(first.left(299, 0, NO_HALT), "below its 300 ticks, no find yet");
+        assertFalse(first.left(300, 0, NO_HALT), "its ticks are spent");
+        assertEquals(StopReason.TICKS, first.spentOut());
+        second.judged(map(true));
+        assertFalse(second.left(150, 0, NO_HALT), "a map found the fault: the trial is falsified");
+        assertEquals(StopReason.FALSIFIED, second.spentOut());
+        assertTrue(first.left(10, 0, NO_HALT), "one driver's find does not stop another");
+    }
+
+    @Test
+    void aTickBudgetGoesOnlyWithACampaignsTrialOfOneFault() {
+        assertThrows(IllegalArgumentException.class, () -> new ExperimentConfig("t", 5, 40, 1, FaultSet.parse("19"),
+                BudgetKind.TICKS, GridDefinition.paper(), List.of("a"), List.of(), 40, FaultyRuns.UNTIL_VERDICT,
+                AnalysisPlan.defaults(List.of("a")), ExperimentConfig.BUILTIN, 300));
+        assertThrows(IllegalArgumentException.class, () -> new ExperimentConfig("t", 5, 40, 1, FaultSet.parse("18,19"),
+                BudgetKind.FIXED_TICKS, GridDefinition.paper(), List.of("a"), List.of(), 40, FaultyRuns.UNTIL_VERDICT,
+                AnalysisPlan.defaults(List.of("a")), ExperimentConfig.BUILTIN, 300));
+        assertThrows(IllegalArgumentException.class, () -> new ExperimentConfig("t", 5, 40, 1, FaultSet.parse("19"),
+                BudgetKind.FIXED_TICKS, GridDefinition.paper(), List.of("a"), List.of(), 40, FaultyRuns.UNTIL_VERDICT,
+                AnalysisPlan.defaults(List.of("a")), ExperimentConfig.BUILTIN, 0));
+    }
+
     @Test
     void theFirstDriverLeadsWithTheReplicationsCandidates() {
         ReplicationPlan plan = plan(BudgetKind.TICKS);

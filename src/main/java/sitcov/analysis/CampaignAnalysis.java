@@ -1,0 +1,153 @@
+package sitcov.analysis;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.OptionalDouble;
+import sitcov.experiment.CampaignConfig;
+import sitcov.faults.Fault;
+import sitcov.stats.FisherExact;
+import sitcov.stats.Holm;
+import sitcov.stats.KaplanMeier;
+import sitcov.stats.LogRank;
+import sitcov.stats.Normal;
+
+/**
+ * The statistics of a campaign (README, "Campaigns: falsifying one version"), from its trials: per
+ * fault and driver, the trials falsified and the Kaplan–Meier median ticks to the first failure; per
+ * fault and pair of drivers, Fisher's exact test on the trials falsified and the log-rank test on the
+ * ticks to first failure, Holm-adjusted together as one family; over all faults, per driver the
+ * faults falsified, and per pair a log-rank test stratified by fault, Holm-adjusted over the pairs.
+ */
+public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials, List<DriverResult> drivers,
+                               List<PairTest> pairs, List<Stratified> stratified, List<Overall> overall) {
+    /** One driver on one fault: trials falsified of {@code trials}, the KM median (empty: not reached), distinct failures. */
+    public record DriverResult(Fault fault, String driver, int falsified, int trials, OptionalDouble medianTicks,
+                               int distinctFailures, List<KaplanMeier.Step> curve) {
+    }
+
+    /**
+     * A pair of drivers on one fault. A test is left out of the family (its p NaN, {@code why} says why)
+     * when it cannot tell the two apart whatever happened: Fisher when both falsified every trial or none,
+     * the log-rank test when no trial of either was falsified.
+     */
+    public record PairTest(Fault fault, String a, String b, int falsifiedA, int falsifiedB, double fisherP,
+                           double fisherHolm, LogRank.Result logRank, double logRankHolm, String why) {
+    }
+
+    /** A pair over all faults: the log-rank sums over the faults (strata), its p and the Holm-adjusted p. */
+    public record Stratified(String a, String b, double observedA, double expectedA, double variance, double chiSquare,
+                             double p, double holm) {
+        /** Whether A had more first failures than equal curves would give it (it falsifies sooner). */
+        public boolean aSooner() {
+            return observedA > expectedA;
+        }
+    }
+
+    /** A driver over all faults: faults falsified in at least one trial, and in more than half of them. */
+    public record Overall(String driver, int anyTrial, int majority, int faults) {
+    }
+
+    public static CampaignAnalysis of(CampaignConfig config, List<CampaignTrial> trials) {
+        List<DriverResult> drivers = new ArrayList<>();
+        for (Fault f : config.faults()) {
+            for (String d : config.drivers()) {
+                List<CampaignTrial> mine = of(trials, f, d);
+                List<KaplanMeier.Step> curve = KaplanMeier.curve(CampaignTrial.observations(mine));
+                int falsified = (int) mine.stream().filter(CampaignTrial::falsified).count();
+                int distinct = (int) mine.stream().flatMap(t -> t.failure().stream()).distinct().count();
+                drivers.add(new DriverResult(f, d, falsified, mine.size(), KaplanMeier.median(curve), distinct, curve));
+            }
+        }
+        List<String[]> pairs = new ArrayList<>();
+        for (int i = 0; i < config.drivers().size(); i++) {
+            for (int j = i + 1; j < config.drivers().size(); j++) {
+                pairs.add(new String[] {config.drivers().get(i), config.drivers().get(j)});
+            }
+        }
+        return new CampaignAnalysis(config, List.copyOf(trials), drivers, pairTests(config, trials, pairs),
+                stratified(config, trials, pairs), overall(config, drivers));
+    }
+
+    private static List<PairTest> pairTests(CampaignConfig config, List<CampaignTrial> trials, List<String[]> pairs) {
+        record Raw(Fault f, String a, String b, int fa, int fb, double fisher, LogRank.Result lr, String why) {
+        }
+        List<Raw> raw = new ArrayList<>();
+        List<Double> family = new ArrayList<>();
+        for (Fault f : config.faults()) {
+            for (String[] p : pairs) {
+                List<CampaignTrial> a = of(trials, f, p[0]);
+                List<CampaignTrial> b = of(trials, f, p[1]);
+                int fa = falsified(a);
+                int fb = falsified(b);
+                boolean fisherTestable = !(fa + fb == 0 || (fa == a.size() && fb == b.size()));
+                double fisher = fisherTestable ? FisherExact.twoSidedP(fa, a.size() - fa, fb, b.size() - fb) : Double.NaN;
+                LogRank.Result lr = LogRank.test(CampaignTrial.observations(a), CampaignTrial.observations(b));
+                boolean lrTestable = fa + fb > 0 && lr.variance() > 0;
+                String why = fa + fb == 0 ? "neither falsified it" : fisherTestable ? "" : "both falsified every trial";
+                raw.add(new Raw(f, p[0], p[1], fa, fb, fisher, lr, why));
+                if (fisherTestable) {
+                    family.add(fisher);
+                }
+                if (lrTestable) {
+                    family.add(lr.p());
+                }
+            }
+        }
+        double[] adjusted = Holm.adjust(family.stream().mapToDouble(Double::doubleValue).toArray());
+        List<PairTest> out = new ArrayList<>();
+        int k = 0;
+        for (Raw r : raw) {
+            double fisherHolm = Double.isNaN(r.fisher()) ? Double.NaN : adjusted[k++];
+            double lrHolm = r.fa() + r.fb() > 0 && r.lr().variance() > 0 ? adjusted[k++] : Double.NaN;
+            out.add(new PairTest(r.f(), r.a(), r.b(), r.fa(), r.fb(), r.fisher(), fisherHolm, r.lr(), lrHolm, r.why()));
+        }
+        return out;
+    }
+
+    /** The log-rank test stratified by fault: (Σ O − Σ E)² / Σ V, each sum over the faults' strata. */
+    private static List<Stratified> stratified(CampaignConfig config, List<CampaignTrial> trials, List<String[]> pairs) {
+        List<double[]> sums = new ArrayList<>();
+        for (String[] p : pairs) {
+            double o = 0;
+            double e = 0;
+            double v = 0;
+            for (Fault f : config.faults()) {
+                LogRank.Result r = LogRank.test(CampaignTrial.observations(of(trials, f, p[0])),
+                        CampaignTrial.observations(of(trials, f, p[1])));
+                o += r.observedA();
+                e += r.expectedA();
+                v += r.variance();
+            }
+            double chi = v == 0 ? 0 : (o - e) * (o - e) / v;
+            sums.add(new double[] {o, e, v, chi, v == 0 ? 1 : 2 * Normal.upperTail(Math.sqrt(chi))});
+        }
+        double[] holm = Holm.adjust(sums.stream().mapToDouble(s -> s[4]).toArray());
+        List<Stratified> out = new ArrayList<>();
+        for (int i = 0; i < pairs.size(); i++) {
+            double[] s = sums.get(i);
+            out.add(new Stratified(pairs.get(i)[0], pairs.get(i)[1], s[0], s[1], s[2], s[3], s[4], holm[i]));
+        }
+        return out;
+    }
+
+    private static List<Overall> overall(CampaignConfig config, List<DriverResult> drivers) {
+        List<Overall> out = new ArrayList<>();
+        for (String d : config.drivers()) {
+            List<DriverResult> mine = drivers.stream().filter(r -> r.driver().equals(d)).toList();
+            int any = (int) mine.stream().filter(r -> r.falsified() > 0).count();
+            int majority = (int) mine.stream().filter(r -> 2 * r.falsified() > r.trials()).count();
+            out.add(new Overall(d, any, majority, mine.size()));
+        }
+        return out;
+    }
+
+    /** The trials of {@code driver} on {@code fault}, in trial order. */
+    public static List<CampaignTrial> of(List<CampaignTrial> trials, Fault fault, String driver) {
+        return trials.stream().filter(t -> t.fault() == fault && t.driver().equals(driver))
+                .sorted(java.util.Comparator.comparingInt(CampaignTrial::trial)).toList();
+    }
+
+    private static int falsified(List<CampaignTrial> trials) {
+        return (int) trials.stream().filter(CampaignTrial::falsified).count();
+    }
+}

@@ -1,0 +1,62 @@
+package sitcov.analysis;
+
+import java.util.List;
+import java.util.Optional;
+import sitcov.experiment.DriverRun;
+import sitcov.experiment.MapRun;
+import sitcov.experiment.StopReason;
+import sitcov.faults.Fault;
+import sitcov.judge.FaultOutcome;
+import sitcov.judge.Notion;
+import sitcov.oracle.AccidentType;
+import sitcov.stats.KaplanMeier;
+
+/**
+ * One trial of one driver in the campaign of one fault (README, "Campaigns: falsifying one version"):
+ * falsified when a map it ran found the fault (differential oracle) within the budget.
+ * {@code ticksToFailure} is the ticks spent up to and including that map, or all the ticks spent;
+ * {@code survivalTicks} is what the survival analysis uses: the ticks to failure of a falsified trial,
+ * else the ticks spent capped at the budget (censored) — a map that found the fault only past the
+ * budget does not count, so no driver gains from overshooting it.
+ */
+public record CampaignTrial(Fault fault, String driver, int trial, long campaignSeed, String streamLabel,
+                            boolean falsified, long ticksToFailure, long survivalTicks, int mapsRun, StopReason stop,
+                            Optional<MapRun> found, Optional<AccidentType> accident) {
+    /** The trial as {@code run} (one driver's share of replication {@code trial}) recorded it. */
+    public static CampaignTrial of(Fault fault, int trial, long campaignSeed, String streamLabel, long tickBudget,
+                                   DriverRun run) {
+        long spent = 0;
+        int maps = 0;
+        for (MapRun m : run.maps()) {
+            spent += m.ticks();
+            maps++;
+            Optional<FaultOutcome> hit = m.faults().stream()
+                    .filter(f -> f.fault() == fault && f.found(Notion.DIFFERENTIAL)).findFirst();
+            if (hit.isPresent()) {
+                boolean within = spent <= tickBudget;
+                return new CampaignTrial(fault, run.driver(), trial, campaignSeed, streamLabel, within, spent,
+                        within ? spent : tickBudget, maps, run.spend().stoppedBy(), Optional.of(m),
+                        hit.get().newAccident());
+            }
+        }
+        return new CampaignTrial(fault, run.driver(), trial, campaignSeed, streamLabel, false, spent,
+                Math.min(spent, tickBudget), maps, run.spend().stoppedBy(), Optional.empty(), Optional.empty());
+    }
+
+    /** The trial as the survival analysis sees it. */
+    public KaplanMeier.Observation observation() {
+        return new KaplanMeier.Observation(survivalTicks, falsified);
+    }
+
+    /** The failure the trial found, as a distinct failure counts it: its cell and accident type; empty if not falsified. */
+    public Optional<String> failure() {
+        if (!falsified) {
+            return Optional.empty();
+        }
+        return Optional.of(found.orElseThrow().cell() + "×" + accident.map(AccidentType::column).orElse("?"));
+    }
+
+    static List<KaplanMeier.Observation> observations(List<CampaignTrial> trials) {
+        return trials.stream().map(CampaignTrial::observation).toList();
+    }
+}

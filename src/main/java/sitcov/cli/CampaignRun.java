@@ -1,0 +1,185 @@
+package sitcov.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import sitcov.control.ControllerSource;
+import sitcov.drivers.Drivers;
+import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.ExperimentRunner;
+import sitcov.experiment.Shard;
+import sitcov.faults.Fault;
+import sitcov.report.CampaignFinisher;
+import sitcov.report.ResultsRecorder;
+import sitcov.results.CampaignManifest;
+import sitcov.results.FolderLock;
+import sitcov.results.IoReason;
+import sitcov.results.Manifest;
+import sitcov.results.ResultsFolder;
+
+/**
+ * {@code run PRESET} for a campaign (README, "Campaigns: falsifying one version"): each fault's trials
+ * run as an ordinary experiment into its own sub-folder (streamed, resumable), one fault after another,
+ * then the campaign's own files are written from the sub-folders. {@code run --resume DIR} takes up a
+ * killed campaign where it stopped: finished faults are kept, the interrupted one is resumed.
+ */
+final class CampaignRun {
+    private final Drivers drivers;
+    private final int threads;
+    private final PrintStream out;
+    private final PrintStream err;
+
+    CampaignRun(Drivers drivers, int threads, PrintStream out, PrintStream err) {
+        this.drivers = drivers;
+        this.threads = threads;
+        this.out = out;
+        this.err = err;
+    }
+
+    /** What a campaign does, as its first line says it. */
+    static String plan(CampaignConfig c, int threads) {
+        return "run: " + c.name() + ": campaign of " + c.faults().size() + " fault" + (c.faults().size() == 1 ? "" : "s")
+                + ", " + c.trials() + " trials per driver and fault, at most " + c.tickBudget() + " ticks a trial, drivers "
+                + String.join(", ", c.drivers()) + ", on " + threads + " threads";
+    }
+
+    int start(CampaignConfig c, Path folder) throws UsageException {
+        FolderLock lock;
+        try {
+            Files.createDirectories(folder);
+            lock = FolderLock.claim(folder);
+        } catch (IOException e) {
+            throw new UsageException("run: cannot create the results folder " + folder + ": " + IoReason.of(e, folder)
+                    + "; choose a writable --out.");
+        } catch (IllegalStateException e) {
+            throw new UsageException("run: " + e.getMessage() + ".");
+        }
+        CampaignManifest manifest = new CampaignManifest(c, Version.current(), false);
+        try {
+            if (!ResultsFolder.holdsNothing(folder)) {
+                lock.close();
+                throw new UsageException("run: " + folder + " holds files already; results never overwrite earlier ones:"
+                        + " name a new folder with --out.");
+            }
+            manifest.write(folder);
+        } catch (IOException e) {
+            close(lock);
+            throw new UsageException("run: cannot write into " + folder + ": " + IoReason.of(e, folder) + ".");
+        }
+        return execute(manifest, folder, lock, "");
+    }
+
+    int resume(Path folder) throws UsageException {
+        CampaignManifest manifest;
+        FolderLock lock;
+        try {
+            manifest = CampaignManifest.read(folder);
+            if (manifest.complete()) {
+                throw new UsageException("run: " + folder + " is complete already; there is nothing to resume.");
+            }
+            if (!manifest.version().equals(Version.current())) {
+                throw new UsageException("run: " + folder + " was written by sitcov " + manifest.version() + ", this is "
+                        + Version.current() + "; resume it with that version, or start the preset afresh.");
+            }
+            lock = FolderLock.claim(folder);
+            // what a kill while the campaign's own files were written left
+            ResultsFolder.sweepTemporaries(folder);
+        } catch (IOException e) {
+            throw new UsageException("run: cannot resume " + folder + ": " + IoReason.of(e, folder) + ".");
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            throw new UsageException("run: cannot resume " + folder + ": " + e.getMessage() + ".");
+        }
+        return execute(manifest, folder, lock, " (resumed)");
+    }
+
+    private int execute(CampaignManifest manifest, Path folder, FolderLock lock, String note) throws UsageException {
+        CampaignConfig c = manifest.config();
+        err.println(plan(c, threads) + ", into " + folder + note);
+        long start = System.nanoTime();
+        try {
+            int n = 0;
+            for (Fault f : c.faults()) {
+                n++;
+                int code = runFault(c, f, folder.resolve(CampaignConfig.folderOf(f)), n);
+                if (code != ExitCode.OK) {
+                    return code;
+                }
+            }
+            CampaignFinisher.finish(folder, manifest);
+        } catch (IOException e) {
+            err.println("sitcov: run: could not complete the campaign in " + folder + ": " + IoReason.of(e, folder)
+                    + "; continue with 'run --resume " + folder + "'.");
+            return ExitCode.FAILURE;
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("run: " + e.getMessage() + ".");
+        } finally {
+            close(lock);
+        }
+        VerdictPrinter.print(out, folder);
+        out.println("Results in " + folder + " (" + Math.round((System.nanoTime() - start) / 1e9) + " s on " + threads
+                + " threads)");
+        return ExitCode.OK;
+    }
+
+    /** The trials of one fault, into {@code sub}: skipped when complete, resumed when a kill interrupted them. */
+    private int runFault(CampaignConfig c, Fault f, Path sub, int n) throws IOException, UsageException {
+        if (ResultsRecorder.isComplete(sub)) {
+            CampaignFinisher.check(Manifest.read(sub), c, f, sub);
+            return ExitCode.OK;
+        }
+        ExperimentConfig config = c.trialsOf(f);
+        Map<String, String> execution = RunCommand.execution(threads);
+        ResultsRecorder recorder;
+        try {
+            if (Files.isRegularFile(sub.resolve(ResultsFolder.MANIFEST))) {
+                Manifest m = Manifest.read(sub);
+                CampaignFinisher.check(m, c, f, sub);
+                recorder = ResultsRecorder.resume(sub, m, execution, System::nanoTime);
+            } else {
+                recorder = ResultsRecorder.create(sub, new Manifest(config, Version.current(), Shard.WHOLE, false, false),
+                        execution, System::nanoTime);
+            }
+        } catch (IllegalStateException e) {
+            throw new UsageException("run: " + e.getMessage() + ".");
+        }
+        ControllerSource controllers;
+        try {
+            controllers = Controllers.open(config.controller(), sub);
+        } catch (UsageException e) {
+            recorder.close();
+            throw e;
+        }
+        ProgressListener progress = new ProgressListener(err, err == System.err && System.console() != null,
+                System::nanoTime);
+        ExperimentRunner runner = new ExperimentRunner(config, drivers, Shard.WHOLE, recorder.journal(), threads,
+                System::nanoTime, List.of(recorder, progress), controllers);
+        err.println("run: fault " + f.id() + " (" + n + " of " + c.faults().size() + "), into " + sub);
+        try (controllers) {
+            runner.run();
+        } catch (FolderLock.Lost e) {
+            err.println("sitcov: run: " + e.getMessage() + "; it stopped there: run the preset again.");
+            return ExitCode.FAILURE;
+        } catch (IllegalStateException | UncheckedIOException e) {
+            err.println("sitcov: run: " + e.getMessage());
+            err.println("sitcov: run: what was judged is kept in " + sub + "; continue with 'run --resume "
+                    + sub.getParent() + "'.");
+            return ExitCode.FAILURE;
+        } finally {
+            recorder.close();
+        }
+        return ExitCode.OK;
+    }
+
+    private static void close(FolderLock lock) {
+        try {
+            lock.close();
+        } catch (IOException e) {
+            // the lock goes with the process anyway
+        }
+    }
+}

@@ -1,0 +1,73 @@
+package sitcov.verdict;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+import sitcov.analysis.CampaignAnalysis;
+import sitcov.analysis.CampaignTrial;
+import sitcov.coverage.GridDefinition;
+import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.MapId;
+import sitcov.experiment.MapRun;
+import sitcov.experiment.StopReason;
+import sitcov.faults.Fault;
+import sitcov.judge.Detection;
+import sitcov.judge.FaultOutcome;
+import sitcov.judge.FaultyRuns;
+import sitcov.judge.RunSummary;
+import sitcov.oracle.AccidentType;
+import sitcov.oracle.Outcome;
+
+class CampaignVerdictTest {
+    private static final Fault F = Fault.ofId(2);
+
+    private static CampaignTrial trial(String driver, int t, long ticks) {
+        if (ticks < 0) {
+            return new CampaignTrial(F, driver, t, 7, "replication-" + t, false, 100, 100, 3, StopReason.TICKS,
+                    Optional.empty(), Optional.empty());
+        }
+        RunSummary run = new RunSummary(Outcome.STOPPED_AT_VERDICT, ticks, Collections.nCopies(AccidentType.values().length, 0L));
+        MapRun map = new MapRun(t, driver, 0, 0, new MapId.Seeded(t), t, t, t, List.of(), run, List.of(new FaultOutcome(F, run,
+                true, true, 1, Detection.FOUND, Optional.of(AccidentType.TIMEOUT), true)));
+        return new CampaignTrial(F, driver, t, 7, "replication-" + t, true, ticks, ticks, 1, StopReason.FALSIFIED,
+                Optional.of(map), Optional.of(AccidentType.TIMEOUT));
+    }
+
+    private static List<String> verdict(List<CampaignTrial> trials, int n) {
+        CampaignConfig config = new CampaignConfig("c", 1, List.of(F), List.of("a", "b"), n, 100, 10, GridDefinition.paper(),
+                FaultyRuns.UNTIL_VERDICT, "builtin");
+        return CampaignVerdict.lines(CampaignAnalysis.of(config, trials));
+    }
+
+    @Test
+    void aDriverThatFalsifiesEveryTrialEarlyIsSaidToFalsifySooner() {
+        List<CampaignTrial> trials = new ArrayList<>();
+        for (int t = 0; t < 3; t++) {
+            trials.add(trial("a", t, 10 * (t + 1)));
+            trials.add(trial("b", t, -1));
+        }
+        List<String> lines = verdict(trials, 3);
+        assertEquals("a falsified 1 of the 1 faults in at least one trial, 1 in a majority of its trials.", lines.get(1));
+        assertEquals("b falsified 0 of the 1 faults in at least one trial, 0 in a majority of its trials.", lines.get(2));
+        // log-rank chi-square (3 − 1.15)² / 0.6775 = 5.05, p = 0.025: shown, a ahead
+        assertTrue(lines.get(3).startsWith("Over all faults, a falsifies sooner than b"), lines.get(3));
+        // of the fault's two tests, log-rank's Holm p is 2 × 0.025 = 0.049 and Fisher's 0.1: only log-rank shows it
+        assertTrue(lines.get(4).contains("fault 2: a ahead of b (3 against 0 trials falsified, log-rank Holm p = 0.049)"),
+                lines.get(4));
+    }
+
+    @Test
+    void whenNothingIsShownTheVerdictSaysSoWithoutCallingThemEqual() {
+        List<CampaignTrial> trials = List.of(trial("a", 0, 40), trial("b", 0, 50), trial("a", 1, -1), trial("b", 1, -1));
+        List<String> lines = verdict(trials, 2);
+        assertTrue(lines.get(3).startsWith("Over all faults, no difference in ticks to first failure is shown between a and b"),
+                lines.get(3));
+        assertTrue(lines.get(3).endsWith("that is not evidence that they are equal."), lines.get(3));
+        assertTrue(lines.get(4).contains("even 2 of 2 against 0 of 2 falsified gives Fisher p = 0.333"), lines.get(4));
+    }
+}

@@ -1,0 +1,106 @@
+package sitcov.analysis;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import sitcov.experiment.DriverRun;
+import sitcov.experiment.MapRun;
+import sitcov.experiment.ReplicationResult;
+import sitcov.oracle.AccidentType;
+import sitcov.stats.McNemar;
+
+/**
+ * The reference car's own failures a test suite found: maps on which the fault-free car had an
+ * accident (no seeded fault involved). Per driver: how many, per million simulated ticks (all the
+ * ticks it spent, faulty runs included, as every driver is charged), and how many distinct ones (a
+ * cell × accident type counted once), in each replication and over all of them pooled. Each other
+ * driver is compared with the reference driver (random, when there is one) by a sign test on the
+ * replications' rates (McNemar's exact form): a replication counts for the driver whose rate is
+ * higher, ties not at all, so failures found in bursts weigh no more than one replication.
+ */
+public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
+    /** One map on which the fault-free car failed. */
+    public record Failure(int replication, String driver, int mapIndex, MapRun run, List<AccidentType> types) {
+    }
+
+    /**
+     * One driver's own failures: in all, per million ticks, distinct per replication (mean) and pooled;
+     * {@code higher}/{@code lower} replications than the reference driver, and the sign test's p (NaN
+     * for the reference itself).
+     */
+    public record DriverRate(String driver, long failures, long ticks, double perMillionTicks, double distinctMean,
+                             long distinctPooled, int higher, int lower, double p) {
+    }
+
+    public OwnFailures {
+        failures = List.copyOf(failures);
+        rates = List.copyOf(rates);
+    }
+
+    /** The failures of every driver in {@code drivers}' order, compared with {@code reference}. */
+    public static OwnFailures of(List<ReplicationResult> results, List<String> drivers, String reference) {
+        List<Failure> all = new ArrayList<>();
+        for (ReplicationResult r : results) {
+            for (String d : drivers) {
+                for (MapRun m : r.of(d).maps()) {
+                    List<AccidentType> types = types(m);
+                    if (!types.isEmpty()) {
+                        all.add(new Failure(r.replication(), d, m.mapIndex(), m, types));
+                    }
+                }
+            }
+        }
+        List<DriverRate> rates = new ArrayList<>();
+        for (String d : drivers) {
+            long failures = 0;
+            long ticks = 0;
+            double distinct = 0;
+            Set<Long> pooled = new HashSet<>();
+            int higher = 0;
+            int lower = 0;
+            for (ReplicationResult r : results) {
+                DriverRun run = r.of(d);
+                Set<Long> here = new HashSet<>();
+                long found = 0;
+                for (MapRun m : run.maps()) {
+                    for (AccidentType t : types(m)) {
+                        long key = (long) m.cell() * AccidentType.values().length + t.ordinal();
+                        here.add(key);
+                        pooled.add(key);
+                    }
+                    found += types(m).isEmpty() ? 0 : 1;
+                }
+                failures += found;
+                ticks += run.spend().ticks();
+                distinct += here.size();
+                double rate = rate(found, run.spend().ticks());
+                double theirs = rate(count(r.of(reference)), r.of(reference).spend().ticks());
+                higher += rate > theirs ? 1 : 0;
+                lower += rate < theirs ? 1 : 0;
+            }
+            rates.add(new DriverRate(d, failures, ticks, rate(failures, ticks), results.isEmpty() ? 0 : distinct / results.size(),
+                    pooled.size(), higher, lower, d.equals(reference) ? Double.NaN : McNemar.exactP(higher, lower)));
+        }
+        return new OwnFailures(all, rates);
+    }
+
+    private static long count(DriverRun run) {
+        return run.maps().stream().filter(m -> !types(m).isEmpty()).count();
+    }
+
+    private static double rate(long failures, long ticks) {
+        return ticks == 0 ? 0 : failures * 1e6 / ticks;
+    }
+
+    /** The accident types of the map's fault-free run, in type order. */
+    static List<AccidentType> types(MapRun m) {
+        List<AccidentType> types = new ArrayList<>();
+        for (AccidentType t : AccidentType.values()) {
+            if (m.faultFree().count(t) > 0) {
+                types.add(t);
+            }
+        }
+        return types;
+    }
+}

@@ -8,6 +8,7 @@ import java.util.Locale;
 import java.util.Map;
 import sitcov.analysis.Comparison;
 import sitcov.analysis.Discovery;
+import sitcov.analysis.OwnFailures;
 import sitcov.analysis.SituationFaults;
 import sitcov.analysis.Summary;
 import sitcov.experiment.DriverRun;
@@ -19,6 +20,7 @@ import sitcov.results.Columns;
 import sitcov.results.OutputFile;
 import sitcov.results.ResultsFolder;
 import sitcov.results.StatsCsv;
+import sitcov.verdict.OwnFailuresText;
 import sitcov.verdict.VerdictText;
 
 /**
@@ -44,12 +46,37 @@ final class AnalysisFiles {
         List<SituationFaults.Uniformity> uniformity = situations.uniformity(DEALS,
                 SeedPlan.analysis(config.masterSeed(), "cell-deals"));
         OutputFile.writeLines(folder.resolve(ResultsFolder.STATS), StatsCsv.rows(comparison));
-        OutputFile.writeLines(folder.resolve(ResultsFolder.VERDICT), VerdictText.lines(comparison, uniformity,
-                config.budget()));
+        String reference = config.drivers().contains("random") ? "random" : config.drivers().get(0);
+        OwnFailures own = OwnFailures.of(summary.results(), config.drivers(), reference);
+        List<String> verdict = new ArrayList<>(VerdictText.lines(comparison, uniformity, config.budget()));
+        if (!summary.results().isEmpty()) {
+            verdict.addAll(OwnFailuresText.lines(own, reference, summary.results().size()));
+        }
+        OutputFile.writeLines(folder.resolve(ResultsFolder.VERDICT), verdict);
+        OutputFile.writeLines(folder.resolve(ResultsFolder.OWN_FAILURES), ownFailures(own));
         OutputFile.writeLines(folder.resolve(ResultsFolder.DISCOVERY), discovery(summary));
         OutputFile.writeLines(folder.resolve(ResultsFolder.CELL_FAULTS), cellFaults(situations));
         OutputFile.writeLines(folder.resolve(ResultsFolder.UNIFORMITY), uniformity(uniformity));
         StatsFigures.writeAll(summary, comparison, folder);
+    }
+
+    static final Columns OWN_FAILURES = Columns.of("replication", "driver", "map_index", "map", "external_seed",
+            "internal_seed", "cell", "accidents", "replay");
+
+    /** The own failures, each with the command that replays it from inside the results folder. */
+    static List<String> ownFailures(OwnFailures own) {
+        List<String> rows = new ArrayList<>();
+        rows.add(OWN_FAILURES.header());
+        for (OwnFailures.Failure f : own.failures()) {
+            rows.add(OWN_FAILURES.row().set("replication", f.replication()).set("driver", f.driver())
+                    .set("map_index", f.mapIndex()).set("map", f.run().map().text())
+                    .set("external_seed", f.run().externalSeed()).set("internal_seed", f.run().internalSeed())
+                    .set("cell", f.run().cell())
+                    .set("accidents", String.join("+", f.types().stream().map(Enum::name).toList()))
+                    .set("replay", "java -jar \"$" + ReportFaultMaps.JAR + "\" replay . --replication " + f.replication()
+                            + " --driver " + f.driver() + " --map " + f.mapIndex()).text());
+        }
+        return rows;
     }
 
     static List<String> discovery(Summary summary) {

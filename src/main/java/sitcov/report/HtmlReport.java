@@ -63,6 +63,9 @@ final class HtmlReport {
         ReportMeasures.append(h, CsvTable.read(folder.resolve(ResultsFolder.SUMMARY)));
         ReportStats.append(h, CsvTable.read(folder.resolve(ResultsFolder.STATS)));
         ReportFaultTables.table2(h, CsvTable.read(folder.resolve(ResultsFolder.TABLE2)), config.drivers());
+        if (java.nio.file.Files.exists(folder.resolve(ResultsFolder.OWN_FAILURES))) {
+            ReportOwnFailures.append(h, CsvTable.read(folder.resolve(ResultsFolder.OWN_FAILURES)));
+        }
         h.append("<h2>Figures</h2><p class=\"muted\">each opens at full size</p>\n");
         for (String fig : figures(folder)) {
             h.append("<p><a href=\"").append(esc(fig)).append("\"><img src=\"").append(esc(fig)).append("\" alt=\"")

@@ -47,6 +47,8 @@ public final class ResultsFolder {
     public static final String CELL_FAULTS = "cell-faults.csv";
     /** Per fault: how much of the variation in detection the cell explains, against chance. */
     public static final String UNIFORMITY = "uniformity.csv";
+    /** The maps on which the fault-free car failed on its own, with the command that replays each. */
+    public static final String OWN_FAILURES = "own-failures.csv";
     /** Everything on one self-contained page: verdict, tables, figures, grid, the maps that found each fault. */
     public static final String REPORT = "report.html";
     private static final String FOREST_PLOT = "fig-faults-odds-ratios";
@@ -71,7 +73,7 @@ public final class ResultsFolder {
 
     /** Every file name sitcov writes at the top of a results folder. */
     private static final List<String> NAMES = List.of(RUNS, DRIVERS, TIMINGS, MANIFEST, EXECUTION, GRID, SUMMARY, TABLE2,
-            COVERAGE_CURVE, FIG2, FIG3, FIG3_TIME, STATS, VERDICT, DISCOVERY, CELL_FAULTS, UNIFORMITY, REPORT,
+            COVERAGE_CURVE, FIG2, FIG3, FIG3_TIME, STATS, VERDICT, DISCOVERY, CELL_FAULTS, UNIFORMITY, OWN_FAILURES, REPORT,
             FIG_MEASURES, FIG_DISCOVERY, SWEEP, FIG4, CAMPAIGN_MANIFEST, CAMPAIGN_TRIALS, CAMPAIGN_DRIVERS, CAMPAIGN_STATS,
             CAMPAIGN_FIGURE, CAMPAIGN_PAGE);
 

@@ -1,0 +1,36 @@
+package sitcov.verdict;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import sitcov.analysis.OwnFailures;
+
+/** The verdict's paragraph on the reference car's own failures: what each driver found, in words that claim no more than the sign test shows. */
+public final class OwnFailuresText {
+    private OwnFailuresText() {
+    }
+
+    public static List<String> lines(OwnFailures own, String reference, int replications) {
+        List<String> out = new ArrayList<>();
+        out.add(PairSummary.HEADING + "The reference car's own failures (fault-free runs with an accident)");
+        out.add(String.format(Locale.ROOT, "Failures the fault-free car had by itself, not a seeded fault's: %d maps in"
+                + " all, listed in own-failures.csv with the command that replays each. Rates are per million ticks of"
+                + " everything the driver spent; distinct failures count a cell × accident type once.", own.failures().size()));
+        OwnFailures.DriverRate ref = own.rates().stream().filter(r -> r.driver().equals(reference)).findFirst().orElseThrow();
+        for (OwnFailures.DriverRate r : own.rates()) {
+            String line = String.format(Locale.ROOT, "- %s: %d failures in %.2f M ticks, %.2f per million ticks; %.2f"
+                    + " distinct a replication on average, %d distinct over all %d replications", r.driver(), r.failures(),
+                    r.ticks() / 1e6, r.perMillionTicks(), r.distinctMean(), r.distinctPooled(), replications);
+            if (!r.driver().equals(reference)) {
+                line += String.format(Locale.ROOT, "; %s %s's rate (×%s); a higher rate than %s in %d replications, a lower"
+                        + " one in %d, sign test p = %s: %s", r.perMillionTicks() >= ref.perMillionTicks() ? "above" : "below",
+                        reference, ref.perMillionTicks() == 0 ? "n/a" : String.format(Locale.ROOT, "%.2f",
+                                r.perMillionTicks() / ref.perMillionTicks()), reference, r.higher(), r.lower(),
+                        VerdictText.p(r.p()), r.p() < 0.05 ? (r.higher() > r.lower() ? "it finds them more often"
+                                : "it finds them less often") : "no difference in rate shown");
+            }
+            out.add(line + ".");
+        }
+        return out;
+    }
+}

@@ -22,6 +22,11 @@ import sitcov.judge.Simulator;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.RunResult;
+import sitcov.oracle.Margins;
+import sitcov.oracle.NearMiss;
+import sitcov.oracle.NearMisses;
+import sitcov.render.NearMissText;
+import sitcov.render.NearMissWatch;
 import sitcov.render.RunGallery;
 import sitcov.render.RunRenderer;
 import sitcov.render.TraceWriter;
@@ -121,6 +126,7 @@ final class SimulateCommand implements Command {
         WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.loadRunnable(name(), load.get());
         long internalSeed = internal.orElse(map.seed());
         TrajectoryRecorder recorder = png.isPresent() ? new TrajectoryRecorder() : null;
+        NearMissWatch nearMisses = new NearMissWatch();
         RunResult result;
         List<Activation> activations;
         try (TraceWriter writer = trace.isPresent() ? new TraceWriter(trace.get(), map.seed(), internalSeed) : null) {
@@ -130,6 +136,7 @@ final class SimulateCommand implements Command {
                 if (scene.failure() != null) {
                     failure[0] = scene.failure().getMessage();
                 }
+                nearMisses.afterTick(tick, scene, detector);
                 if (recorder != null) {
                     recorder.afterTick(tick, scene, detector);
                 }
@@ -156,6 +163,9 @@ final class SimulateCommand implements Command {
                         + (a.effective() ? "effective " + a.effectiveCount() + " times, first at tick " + a.firstEffectiveTick()
                         : a.reached() ? "reached, never effective" : "not reached"));
             }
+        }
+        if (nearMisses.started()) {
+            printNearMisses(nearMisses.nearMisses(), out);
         }
         trace.ifPresent(t -> out.println("Trace written to " + t + " (" + result.ticks() + " ticks, one row each)"));
         if (png.isPresent()) {
@@ -251,6 +261,29 @@ final class SimulateCommand implements Command {
             s.append("; excused contacts: ").append(excused);
         }
         return s.toString();
+    }
+
+    /**
+     * Each measure's least value and the tick it was first reached, and ρ per accident type, with
+     * their units, as results keep them (4 decimals); beside the accidents, never counted as failures.
+     */
+    static void printNearMisses(NearMisses watched, PrintStream out) {
+        out.println("Near misses (the closest the run came; reported beside accidents, never counted as one):");
+        for (NearMiss m : NearMiss.values()) {
+            double v = watched.least(m);
+            out.println(String.format(Locale.ROOT, "  %-27s %s", NearMissText.name(m),
+                    NearMissText.value(m, v, Margins.DECIMALS) + (Double.isFinite(v) ? " at tick " + watched.tickOf(m) : "")));
+        }
+        out.println("Robustness ρ per accident type (below 0: that accident happened; the least over the run):");
+        for (AccidentType t : AccidentType.values()) {
+            out.println(String.format(Locale.ROOT, "  %-27s %s", t.name(),
+                    NearMissText.rho(t, Margins.kept(watched.robustness(t)), Margins.DECIMALS)
+                            + (t == AccidentType.TIMEOUT ? timeoutNote(watched.robustness(t)) : "")));
+        }
+    }
+
+    private static String timeoutNote(double rho) {
+        return Double.isNaN(rho) ? " (the run ended otherwise)" : rho == 0 ? " (timed out)" : " to spare before the timeout";
     }
 
     private static String describe(Accident a) {

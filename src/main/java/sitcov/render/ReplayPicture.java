@@ -69,7 +69,7 @@ public final class ReplayPicture {
     static RunRenderer.Highlights highlights(Side faulty, Activation activation, java.util.Optional<Accident> newAccident) {
         java.util.List<RunRenderer.Ring> rings = new java.util.ArrayList<>();
         if (activation.effective()) {
-            int i = entryOf(faulty.trajectory(), activation.firstEffectiveTick());
+            int i = faulty.trajectory().entryOf(activation.firstEffectiveTick());
             if (i >= 0) {
                 rings.add(new RunRenderer.Ring(faulty.trajectory().x(i), faulty.trajectory().y(i), EFFECT,
                         "fault " + activation.fault().id() + " first acts, t=" + activation.firstEffectiveTick()));
@@ -111,14 +111,5 @@ public final class ReplayPicture {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 14));
         g.drawString("the same map and internal seed; the runs part where the fault first acts", 12, 50);
         g.drawString(verdict, half + gap + 12, 50);
-    }
-
-    private static int entryOf(TrajectoryRecorder t, long tick) {
-        for (int i = 0; i < t.ticks(); i++) {
-            if (t.tick(i) >= tick) {
-                return i;
-            }
-        }
-        return t.ticks() - 1;
     }
 }

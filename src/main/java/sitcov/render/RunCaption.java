@@ -14,8 +14,9 @@ import sitcov.oracle.AccidentType;
 import sitcov.oracle.RunResult;
 
 /**
- * The caption strip of a run picture, in pixels: the seeds, the outcome and the accidents; a row
- * naming the path colours, the footprints and the accident markers; and the map's own legend.
+ * The caption strip of a run picture, in pixels: the seeds, the outcome, the accidents and the
+ * least robustness ρ; a row naming the path colours, the footprints, the accident markers and the
+ * closest approaches' dot; and the map's own legend.
  * Rows that do not fit the picture's width fall back to shorter names.
  */
 final class RunCaption {
@@ -77,7 +78,27 @@ final class RunCaption {
         if (excused > 0 && !compact) {
             s.append(" · ").append(excused).append(excused == 1 ? " excused contact" : " excused contacts");
         }
+        leastRho(result).ifPresent(rho -> s.append(" · least ρ ").append(rho));
         return s.append(compact ? "" : " · grid 10 m").toString();
+    }
+
+    /**
+     * The least ρ over the accident types measured in metres, and its type: how near the run came to
+     * its nearest accident (below 0: it had it). TIMEOUT's ρ counts ticks, so it is not compared.
+     */
+    static java.util.Optional<String> leastRho(RunResult result) {
+        AccidentType least = null;
+        for (AccidentType t : AccidentType.values()) {
+            double v = result.margins().robustness(t);
+            if (t != AccidentType.TIMEOUT && !Double.isNaN(v)
+                    && (least == null || v < result.margins().robustness(least))) {
+                least = t;
+            }
+        }
+        if (least == null || Double.isInfinite(result.margins().robustness(least))) {
+            return java.util.Optional.empty();
+        }
+        return java.util.Optional.of(NearMissText.rho(least, result.margins().robustness(least), 2) + " (" + least.label() + ")");
     }
 
     /**
@@ -119,7 +140,8 @@ final class RunCaption {
             marks.marker(type, x + sym / 2.0, mid, sym / 2.0);
             x = name(compactness >= 1 ? type.label() : type.name(), x + sym + gap, baseline, fm, gap);
         }
-        return x;
+        RunMarks.closestDot(g, x + sym / 2.0, mid, Math.max(3, sym / 3.0));
+        return name(compactness >= 1 ? "closest" : "closest approach", x + sym + gap, baseline, fm, gap);
     }
 
     private int name(String text, int x, int baseline, FontMetrics fm, int gap) {

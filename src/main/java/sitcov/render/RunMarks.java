@@ -26,6 +26,10 @@ final class RunMarks {
     static final Color PATH_SHADOW = new Color(0, 0, 0, 150);
     static final Color FOOTPRINT = new Color(255, 255, 255, 150);
     static final Color FINAL_FILL = new Color(255, 255, 255, 200);
+    /** A closest approach's dot (see {@link RunRenderer}): a green no path, marker or map colour uses. */
+    static final Color CLOSEST = new Color(0x39E639);
+    /** Its label's accent, darker so that it shows on the label's light background. */
+    static final Color CLOSEST_ACCENT = new Color(0x1B8A1B);
     /** Metres of path between two direction arrowheads. */
     static final double CHEVRON_SPACING = 15;
 
@@ -180,6 +184,19 @@ final class RunMarks {
             g.draw(new Line2D.Double(x - a, y - a, x + a, y + a));
             g.draw(new Line2D.Double(x - a, y + a, x + a, y - a));
         }
+    }
+
+    /** A closest approach: a small green dot, outlined black and white so it shows on the path and the road. */
+    static void closestDot(Graphics2D g, double x, double y, double r) {
+        Ellipse2D dot = new Ellipse2D.Double(x - r, y - r, 2 * r, 2 * r);
+        g.setStroke(new BasicStroke(3.5f));
+        g.setColor(Color.WHITE);
+        g.draw(dot);
+        g.setColor(CLOSEST);
+        g.fill(dot);
+        g.setStroke(new BasicStroke(1.5f));
+        g.setColor(Color.BLACK);
+        g.draw(dot);
     }
 
     private static Path2D polygon(double x, double y, double r, int corners, double startDegrees) {

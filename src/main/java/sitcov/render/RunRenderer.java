@@ -17,6 +17,8 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.stream.Collectors;
 import sitcov.oracle.Accident;
+import sitcov.oracle.NearMiss;
+import sitcov.oracle.NearMisses;
 import sitcov.oracle.RunResult;
 import sitcov.world.Dimensions;
 import sitcov.world.WorldMap;
@@ -24,7 +26,8 @@ import sitcov.world.WorldMap;
 /**
  * Draws one run over its map: the car's path (coloured by driving, crossing a junction,
  * overtaking), its footprint every few ticks and at the end, and a labelled marker at each
- * accident; the caption gives the seeds, the outcome and the accidents. A zoomed window around a
+ * accident, a small dot where the run came closest to a moving car, a parked car, the road's edge
+ * and the centre line; the caption gives the seeds, the outcome, the accidents and the least ρ. A zoomed window around a
  * point shows a manoeuvre closely, with the footprint of every tick.
  */
 public final class RunRenderer {
@@ -92,11 +95,18 @@ public final class RunRenderer {
                     ring(pixels, p, r, ring.colour());
                     labels.reserve(new Rectangle2D.Double(p.getX() - r, p.getY() - r, 2 * r, 2 * r));
                 }
+                List<Closest> closest = closest(trajectory, result);
+                double dot = closestRadius(style);
+                for (Closest c : closest) {
+                    Point2D p = world.transform(new Point2D.Double(c.x(), c.y()), null);
+                    labels.reserve(new Rectangle2D.Double(p.getX() - dot, p.getY() - dot, 2 * dot, 2 * dot));
+                }
                 accidents(pixels, style, labels, world, result.accidents(), worldArea, true, highlights);
                 for (Ring ring : highlights.rings()) {
                     Point2D p = world.transform(new Point2D.Double(ring.x(), ring.y()), null);
                     labels.place(ring.label(), p.getX(), p.getY(), r + 3, r + 1, ring.colour());
                 }
+                closestApproaches(pixels, labels, world, closest, dot);
                 placed.addAll(labels.placed());
             }
         });
@@ -107,6 +117,70 @@ public final class RunRenderer {
             g.dispose();
         }
         return new Picture(image, List.copyOf(placed));
+    }
+
+    /**
+     * Where the run came closest to a moving car, a parked car, the road's edge and the centre line:
+     * the middle of the car's footprint at the tick each least gap or margin was first reached. A
+     * margin below zero that the run's accident of that type already marks is left to its marker.
+     */
+    record Closest(NearMiss measure, double value, long tick, double x, double y) {
+        String text() {
+            return NearMissText.shortName(measure) + " " + NearMissText.value(measure, value, 2) + " t=" + tick;
+        }
+    }
+
+    static List<Closest> closest(TrajectoryRecorder trajectory, RunResult result) {
+        List<Closest> all = new ArrayList<>();
+        if (trajectory.nearMisses().isEmpty()) {
+            return all;
+        }
+        NearMisses watched = trajectory.nearMisses().get();
+        for (NearMiss m : CLOSEST) {
+            double v = watched.least(m);
+            if (!Double.isFinite(v) || (v < 0 && result.countsByType().getOrDefault(NearMissText.accident(m), 0L) > 0)) {
+                continue;
+            }
+            int i = trajectory.entryOf(watched.tickOf(m));
+            var middle = RunMarks.body(trajectory.x(i), trajectory.y(i), trajectory.heading(i)).centre();
+            all.add(new Closest(m, v, watched.tickOf(m), middle.x(), middle.y()));
+        }
+        return all;
+    }
+
+    /** The measures in metres a picture marks; the two times have no one place. */
+    private static final List<NearMiss> CLOSEST = List.of(NearMiss.MOVING_GAP, NearMiss.PARKED_GAP,
+            NearMiss.ROAD_EDGE, NearMiss.CENTRE_LINE);
+
+    private static double closestRadius(MapStyle style) {
+        return Math.max(4, 0.7 * style.scale());
+    }
+
+    /** A small dot at each closest approach, labelled last, those at about the same place sharing a label. */
+    private static void closestApproaches(Graphics2D g, LabelPlacer labels, AffineTransform world, List<Closest> closest,
+                                          double r) {
+        List<Point2D> anchors = new ArrayList<>();
+        List<List<Closest>> groups = new ArrayList<>();
+        for (Closest c : closest) {
+            Point2D p = world.transform(new Point2D.Double(c.x(), c.y()), null);
+            RunMarks.closestDot(g, p.getX(), p.getY(), r);
+            int group = -1;
+            for (int k = 0; k < groups.size() && group < 0; k++) {
+                if (anchors.get(k).distance(p) < SAME_PLACE_PIXELS) {
+                    group = k;
+                }
+            }
+            if (group < 0) {
+                anchors.add(p);
+                groups.add(new ArrayList<>(List.of(c)));
+            } else {
+                groups.get(group).add(c);
+            }
+        }
+        for (int k = 0; k < groups.size(); k++) {
+            String text = "closest: " + groups.get(k).stream().map(Closest::text).collect(Collectors.joining(", "));
+            labels.place(text, anchors.get(k).getX(), anchors.get(k).getY(), r + 3, r + 1, RunMarks.CLOSEST_ACCENT);
+        }
     }
 
     /** Radius in pixels of a ring round a point of the run: wider than an accident marker, so both show. */

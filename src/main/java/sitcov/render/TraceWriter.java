@@ -8,6 +8,10 @@ import java.nio.file.Path;
 import java.util.Locale;
 import sitcov.judge.RunObserver;
 import sitcov.oracle.AccidentDetector;
+import sitcov.oracle.AccidentType;
+import sitcov.oracle.Margins;
+import sitcov.oracle.NearMiss;
+import sitcov.oracle.NearMisses;
 import sitcov.results.OutputFile;
 import sitcov.control.Vehicle;
 import sitcov.vehicles.Telemetry;
@@ -15,19 +19,27 @@ import sitcov.vehicles.Telemetry;
 /**
  * Writes a run tick by tick as CSV (UTF-8, '\n' line ends, a header row): both seeds, the tick,
  * the autonomous car's pose, speed, lane, overtaking stage, junction flags, the behaviour that
- * steered it, and the accidents so far. Numbers have a fixed, locale-independent format, so the
+ * steered it, and the accidents so far; then how close the run has come to each accident so far: each
+ * near-miss measure's least value up to this tick and each accident type's robustness ρ so far
+ * ({@link NearMisses}: the watcher keeps least-so-far values, which are exact; a tick's own gaps it
+ * skips where they cannot beat the least). These are runs.csv's near_* and rho_* columns, written the
+ * same way (4 decimals, "inf" never met, empty unknown), so the last row holds the run's values.
+ * Numbers have a fixed, locale-independent format, so the
  * same run always gives the same bytes. Rows go to a temporary file beside the target, which
  * {@link #close()} moves into place, so a reader never sees half a trace.
  */
 public final class TraceWriter implements RunObserver, AutoCloseable {
-    public static final String HEADER = "external_seed,internal_seed,tick,x,y,heading,speed,lane,overtaking_stage,"
+    /** The columns before the near misses, as they were before near misses were traced. */
+    static final String POSE_HEADER = "external_seed,internal_seed,tick,x,y,heading,speed,lane,overtaking_stage,"
             + "crossing_junction,waiting_at_junction,steered_by,accidents_so_far";
+    public static final String HEADER = POSE_HEADER + marginColumns();
 
     private final Path target;
     private final OutputFile file;
     private final BufferedWriter out;
     private final String seeds;
-    private final StringBuilder row = new StringBuilder(128);
+    private final StringBuilder row = new StringBuilder(256);
+    private final NearMissWatch nearMisses = new NearMissWatch();
     private boolean closed;
     private boolean failed;
 
@@ -62,7 +74,16 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
                 .append(run.selfReport().crossingJunction()).append(',')
                 .append(run.selfReport().waitingAtJunction()).append(',')
                 .append(text(run.selfReport().steeredBy())).append(',')
-                .append(detector.accidents().size()).append('\n');
+                .append(detector.accidents().size());
+        nearMisses.afterTick(tick, run, detector);
+        NearMisses watched = nearMisses.nearMisses();
+        for (NearMiss m : NearMiss.values()) {
+            row.append(',').append(margin(watched.least(m)));
+        }
+        for (AccidentType t : AccidentType.values()) {
+            row.append(',').append(margin(watched.robustness(t)));
+        }
+        row.append('\n');
         try {
             out.append(row);
         } catch (IOException e) {
@@ -87,6 +108,29 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
         } finally {
             file.close();
         }
+    }
+
+    private static String marginColumns() {
+        StringBuilder s = new StringBuilder();
+        for (NearMiss m : NearMiss.values()) {
+            s.append(',').append(m.column());
+        }
+        for (AccidentType t : AccidentType.values()) {
+            s.append(',').append(t.robustnessColumn());
+        }
+        return s.toString();
+    }
+
+    /** A margin as runs.csv writes it (see README, "The results folder"): kept decimals, "inf", empty unknown. */
+    private static String margin(double v) {
+        double kept = Margins.kept(v);
+        if (Double.isNaN(kept)) {
+            return "";
+        }
+        if (Double.isInfinite(kept)) {
+            return kept > 0 ? "inf" : "-inf";
+        }
+        return String.format(Locale.ROOT, "%." + Margins.DECIMALS + "f", kept); // as runs.csv has it, "-0.0000" too
     }
 
     private static String number(double v) {

@@ -5,6 +5,7 @@ import java.util.List;
 import sitcov.judge.RunObserver;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentDetector;
+import sitcov.oracle.NearMisses;
 import sitcov.control.Vehicle;
 import sitcov.vehicles.OvertakingStage;
 import sitcov.vehicles.Telemetry;
@@ -14,7 +15,8 @@ import sitcov.vehicles.Telemetry;
  * was, where it faced, how fast it went, its overtaking stage and whether it was crossing a
  * junction. Entries are kept in growable primitive arrays, so a 5000-tick run costs a few hundred
  * kilobytes, not 5000 objects. Also keeps the detector's list of accidents, which is final once the
- * run is over.
+ * run is over, and watches the run's near misses ({@link NearMissWatch}) so that a picture can say
+ * where each least value was reached.
  */
 public final class TrajectoryRecorder implements RunObserver {
     private static final OvertakingStage[] STAGES = OvertakingStage.values();
@@ -29,6 +31,7 @@ public final class TrajectoryRecorder implements RunObserver {
     private byte[] stages = new byte[INITIAL_CAPACITY];
     private boolean[] crossings = new boolean[INITIAL_CAPACITY];
     private List<Accident> accidents = List.of();
+    private final NearMissWatch nearMisses = new NearMissWatch();
 
     @Override
     public void afterTick(long tick, Telemetry run, AccidentDetector detector) {
@@ -45,6 +48,22 @@ public final class TrajectoryRecorder implements RunObserver {
         crossings[ticks] = run.selfReport().crossingJunction();
         ticks++;
         accidents = detector.accidents(); // a read-only view of the detector's list
+        nearMisses.afterTick(tick, run, detector);
+    }
+
+    /** The run's near misses so far; empty before the first tick. */
+    public java.util.Optional<NearMisses> nearMisses() {
+        return nearMisses.started() ? java.util.Optional.of(nearMisses.nearMisses()) : java.util.Optional.empty();
+    }
+
+    /** The entry of the first tick at or after {@code tick}, or the last entry; −1 when none was recorded. */
+    public int entryOf(long tick) {
+        for (int i = 0; i < ticks; i++) {
+            if (tickNumbers[i] >= tick) {
+                return i;
+            }
+        }
+        return ticks - 1;
     }
 
     private static OvertakingStage stageOf(String reported) {

@@ -6,6 +6,7 @@
  * ({@link sitcov.render.ReplayAnimation}, {@link sitcov.render.GifFrames}), a results folder's replays of
  * the maps that found each fault ({@link sitcov.render.ReplayGallery}) and a gallery of runs that went
  * wrong ({@link sitcov.render.RunGallery}); and a run's per-tick trace as CSV
- * ({@link sitcov.render.TraceWriter}).
+ * ({@link sitcov.render.TraceWriter}). Near misses are put into words once ({@link sitcov.render.NearMissText})
+ * and watched beside a recorded run ({@link sitcov.render.NearMissWatch}) for the tick each least was reached.
  */
 package sitcov.render;

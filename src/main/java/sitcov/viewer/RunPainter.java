@@ -16,6 +16,10 @@ import java.util.Locale;
 import sitcov.geom.Bearing;
 import sitcov.judge.LiveRun;
 import sitcov.oracle.Accident;
+import sitcov.oracle.AccidentType;
+import sitcov.oracle.NearMiss;
+import sitcov.oracle.NearMisses;
+import sitcov.render.NearMissText;
 import sitcov.render.MapRenderer;
 import sitcov.render.MapShapes;
 import sitcov.render.OutcomeText;
@@ -30,10 +34,10 @@ import sitcov.control.Vehicle;
  * Paints one live run as it stands: the map (drawn once), the car's sensors (the camera's 90° fan to
  * 10 m with the samples where its rays met markings; the LIDAR's half disc to 25 m with the rays of
  * its last sweep that hit something), every vehicle, each accident where it happened, and a header
- * with the car's state. It only reads the run: the model never knows it is watched.
+ * with the car's state and how close the run has come to each accident so far (its near misses). It only reads the run: the model never knows it is watched.
  */
 public final class RunPainter {
-    static final int HEADER = 58;
+    static final int HEADER = 74;
     static final Color CAR = new Color(0x00E5FF);
     static final Color MOVING = new Color(0xB84FD0);
     static final Color ACCIDENT = new Color(0xD7263D);
@@ -112,6 +116,33 @@ public final class RunPainter {
         fitted(g, accidents.isEmpty() ? "no accident" : accidents.size() + " accident" + (accidents.size() == 1 ? "" : "s")
                 + ", the last " + accidents.get(accidents.size() - 1).type() + " at tick "
                 + accidents.get(accidents.size() - 1).tick(), Font.PLAIN, 52);
+        g.setColor(Color.DARK_GRAY);
+        fitted(g, nearMisses(), Font.PLAIN, 68);
+    }
+
+    /**
+     * The header's last line: each near-miss measure's least value so far, in its unit ("never" while
+     * unmet), and the least ρ so far over the accident types measured in metres. Reported beside
+     * accidents, never counted as one.
+     */
+    String nearMisses() {
+        if (run.tick() < 0) {
+            return "closest so far: nothing yet";
+        }
+        NearMisses watched = run.nearMisses();
+        StringBuilder s = new StringBuilder("closest so far: ");
+        for (NearMiss m : NearMiss.values()) {
+            s.append(m.ordinal() == 0 ? "" : " · ").append(NearMissText.shortName(m)).append(' ')
+                    .append(NearMissText.value(m, watched.least(m), m == NearMiss.TIME_TO_COLLISION ? 1 : 2));
+        }
+        AccidentType least = null;
+        for (AccidentType t : AccidentType.values()) {
+            if (t != AccidentType.TIMEOUT && (least == null || watched.robustness(t) < watched.robustness(least))) {
+                least = t;
+            }
+        }
+        return s.append(" · least ρ ").append(NearMissText.rho(least, watched.robustness(least), 2))
+                .append(" (").append(least.label()).append(')').toString();
     }
 
     /** Draws a header line in 12 points, smaller (down to 9) if the pane is narrow, cut short only if even that is too wide. */

@@ -10,6 +10,9 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import sitcov.judge.Simulator;
+import sitcov.oracle.AccidentType;
+import sitcov.oracle.NearMiss;
+import sitcov.render.NearMissText;
 import sitcov.render.TraceWriter;
 
 class SimulateCommandTest {
@@ -17,11 +20,14 @@ class SimulateCommandTest {
     Path folder;
 
     @Test
-    void oneRunPrintsOneLineWithBothSeedsAndTheOutcome() {
+    void oneRunPrintsOneLineWithBothSeedsAndTheOutcomeThenItsNearMisses() {
         CliRunner result = CliRunner.run("simulate", "--seed", "3", "--internal-seed", "100");
 
         assertEquals(ExitCode.OK, result.exitCode(), result.err());
-        assertEquals(1, result.out().lines().count(), result.out());
+        List<String> lines = result.out().lines().toList();
+        // the result line, a heading and a line per measure, a heading and a line per accident type
+        assertEquals(1 + 1 + NearMiss.values().length + 1 + AccidentType.values().length, lines.size(), result.out());
+        assertTrue(lines.get(1).startsWith("Near misses"), result.out());
         assertTrue(result.out().startsWith("seed 3 internal 100: "), result.out());
         assertTrue(result.out().contains("TARGET_REACHED") || result.out().contains("TIMEOUT"), result.out());
         assertTrue(result.out().contains(" ticks; accidents: "), result.out());
@@ -60,6 +66,44 @@ class SimulateCommandTest {
         assertTrue(rows.get(1).startsWith("3,100,0,"), rows.get(1));
         assertTrue(result.out().contains("Trace written to " + trace), result.out());
         assertTrue(result.out().contains("Run drawn to " + png), result.out());
+    }
+
+    /**
+     * Map 1's car passes a parked car 0.47 m off: each printed least value is the trace's last value of
+     * its column, and its tick the first row where the column reached it (the trace is checked
+     * against the geometry in TraceWriterTest).
+     */
+    @Test
+    void theNearMissesPrintedAreTheTracesLeastValuesAndTheTicksTheyWereReached() throws Exception {
+        Path trace = folder.resolve("one.csv");
+        CliRunner result = CliRunner.run("simulate", "--seed", "1", "--trace", trace.toString());
+        assertEquals(ExitCode.OK, result.exitCode(), result.err());
+        List<String> rows = Files.readAllLines(trace);
+        List<String> header = List.of(rows.get(0).split(","));
+        List<String> lines = result.out().lines().toList();
+        for (NearMiss m : NearMiss.values()) {
+            int column = header.indexOf(m.column());
+            String least = rows.get(rows.size() - 1).split(",")[column];
+            int first = 1;
+            while (!rows.get(first).split(",")[column].equals(least)) {
+                first++;
+            }
+            String tick = rows.get(first).split(",")[2];
+            String name = NearMissText.name(m);
+            String line = lines.stream().filter(l -> l.startsWith("  " + name + " ")).findFirst().orElseThrow();
+            String shown = least.equals("inf") ? "never"
+                    : m == NearMiss.POST_ENCROACHMENT ? least.replaceAll("\\.0+$", "") + " ticks at tick " + tick
+                    : least + " " + NearMissText.unit(m) + " at tick " + tick;
+            assertEquals(shown, line.substring(2 + name.length()).strip(), result.out());
+        }
+        String parked = rows.get(rows.size() - 1).split(",")[header.indexOf(NearMiss.PARKED_GAP.column())];
+        assertTrue(Double.parseDouble(parked) > 0 && Double.parseDouble(parked) < 1, "map 1's near miss: " + parked);
+        for (AccidentType t : AccidentType.values()) {
+            String rho = rows.get(rows.size() - 1).split(",", -1)[header.indexOf(t.robustnessColumn())];
+            String line = lines.stream().filter(l -> l.startsWith("  " + t.name() + " ")).findFirst().orElseThrow();
+            assertTrue(line.substring(2 + t.name().length()).strip().startsWith(
+                    t == AccidentType.TIMEOUT ? rho.replaceAll("\\.0+$", "") + " ticks" : rho + " m"), line);
+        }
     }
 
     @Test

@@ -162,7 +162,8 @@ class RunRendererTest {
         double x = target.x();
         double y = target.y();
         // four accidents 4 m apart round the Target (far enough apart for a label each), a ring on one
-        // of them and one singled out: seven labels with the map's own Target and AR
+        // of them and one singled out: seven labels with the map's own Target and AR, besides the
+        // closest approaches' labels
         Accident singled = new Accident(4999, AccidentType.TIMEOUT, x - 4, y, -1);
         RunResult crowded = new RunResult(MAP.seed(), 100, Outcome.TIMEOUT, List.of(
                 new Accident(52, AccidentType.LEAVEROAD, x + 4, y, -1),
@@ -173,7 +174,17 @@ class RunRendererTest {
                 List.of(new RunRenderer.Ring(x - 4, y, Color.ORANGE, "fault 17 first acts, t=189")),
                 java.util.Optional.of(singled), Color.RED, "first new accident: ");
         List<java.awt.geom.Rectangle2D> labels = new RunRenderer(SCALE).draw(MAP, trajectory, crowded, highlights).labels();
-        assertEquals(7, labels.size(), "Target, AR, four accidents and the ring each have a label");
+        // and the run's closest approaches: a label for each place, those within 18 pixels of an earlier one sharing it
+        List<RunRenderer.Closest> closest = RunRenderer.closest(trajectory, crowded);
+        assertEquals(4, closest.size());
+        List<RunRenderer.Closest> places = new java.util.ArrayList<>();
+        for (RunRenderer.Closest c : closest) {
+            if (places.stream().noneMatch(p -> Math.hypot(p.x() - c.x(), p.y() - c.y()) * SCALE < 18)) {
+                places.add(c);
+            }
+        }
+        assertTrue(places.size() < closest.size(), "the case this test needs: two closest approaches at one place");
+        assertEquals(7 + places.size(), labels.size(), "Target, AR, four accidents, the ring and the closest approaches");
         for (int i = 0; i < labels.size(); i++) {
             for (int j = i + 1; j < labels.size(); j++) {
                 assertFalse(labels.get(i).intersects(labels.get(j)), "labels " + i + " and " + j + " overlap: "

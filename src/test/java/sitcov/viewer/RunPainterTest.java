@@ -1,17 +1,20 @@
 package sitcov.viewer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import java.util.List;
+import java.util.Locale;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import sitcov.faults.Fault;
 import sitcov.judge.LiveRun;
 import sitcov.judge.Simulator;
 import sitcov.oracle.Accident;
+import sitcov.oracle.NearMiss;
 import sitcov.oracle.Outcome;
 import sitcov.oracle.RunResult;
 import sitcov.render.MapRenderer;
@@ -123,5 +126,39 @@ class RunPainterTest {
             }
         }
         assertEquals(0, differing, "caption pixels painted over");
+    }
+
+    /**
+     * Map 1's car passes a parked car closest at some tick T: the header gives the least gap so far,
+     * larger before T than from T on, and once the run is over the run's own kept value.
+     */
+    @Test
+    void theHeaderGivesTheNearMissesSoFarAsTheRunGoesOn() {
+        WorldMap map = MapGenerator.generate(1);
+        RunPainter painter = new RunPainter(new LiveRun(map, 1, Set.of()), "test", 3);
+        assertEquals("closest so far: nothing yet", painter.nearMisses());
+        RunResult whole = Simulator.run(map, 1);
+        LiveRun probe = new LiveRun(map, 1, Set.of());
+        while (probe.step()) {
+            // to the end, to learn when the least gap was reached
+        }
+        long closest = probe.nearMisses().tickOf(NearMiss.PARKED_GAP);
+        assertTrue(closest > 10, "the case this test needs: " + closest);
+        while (painter.run().tick() < closest - 1) {
+            painter.run().step();
+        }
+        double before = painter.run().nearMisses().least(NearMiss.PARKED_GAP);
+        assertTrue(before > whole.margins().least(NearMiss.PARKED_GAP), before + " before tick " + closest);
+        assertTrue(painter.nearMisses().contains("parked car " + String.format(Locale.ROOT, "%.2f m", before)),
+                painter.nearMisses());
+        while (painter.run().step()) {
+            // to the end
+        }
+        String end = painter.nearMisses();
+        assertTrue(end.startsWith("closest so far: moving car "), end);
+        assertTrue(end.contains(" · parked car " + String.format(Locale.ROOT, "%.2f m",
+                whole.margins().least(NearMiss.PARKED_GAP)) + " · "), end);
+        assertTrue(end.contains(" · least ρ "), end);
+        assertFalse(end.contains("unknown"), end);
     }
 }

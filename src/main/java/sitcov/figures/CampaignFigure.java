@@ -51,14 +51,15 @@ public final class CampaignFigure {
             g.drawString(a.config().trials() + " trials per driver and fault; a bar | marks a trial censored (its "
                     + a.config().tickBudget() + " ticks spent, or stopped, with no failure)", 20, 75);
             // both axes padded: a curve at 1, or a censored trial at the budget, stays inside the frame
-            Axis x = Axis.upTo(a.config().tickBudget()).padded();
+            // in thousands of ticks, so the labels of a budget of 100 000s fit under a small panel
+            Axis x = Axis.upTo(a.config().tickBudget() / THOUSAND).padded();
             Axis y = Axis.steps(0.25, 4).padded();
             for (int i = 0; i < faults.size(); i++) {
                 Fault f = faults.get(i);
                 int left = LEFT + (i % cols) * (PANEL_W + GAP_W);
                 int top = TOP + 20 + (i / cols) * (PANEL_H + GAP_H);
                 Chart chart = new Chart(g, left, top, PANEL_W, PANEL_H, x, y);
-                chart.axes("fault " + f.id() + " (" + f.label() + ")", "ticks", "not yet falsified");
+                chart.axes("fault " + f.id() + " (" + f.label() + ")", "thousand ticks", "not yet falsified");
                 for (int d = 0; d < drivers.size(); d++) {
                     List<CampaignTrial> trials = CampaignAnalysis.of(a.trials(), f, drivers.get(d));
                     curve(chart, g, trials, a.config().tickBudget(), Chart.driver(d), Chart.shift(d, drivers.size()));
@@ -70,6 +71,8 @@ public final class CampaignFigure {
         return image;
     }
 
+    private static final double THOUSAND = 1000.0;
+
     private static void curve(Chart chart, Graphics2D g, List<CampaignTrial> trials, long budget, Color colour,
                               double shift) {
         List<KaplanMeier.Step> steps = KaplanMeier.curve(trials.stream().map(CampaignTrial::observation).toList());
@@ -78,10 +81,10 @@ public final class CampaignFigure {
         xs[0] = 0;
         ys[0] = 1;
         for (int i = 0; i < steps.size(); i++) {
-            xs[i + 1] = steps.get(i).time();
+            xs[i + 1] = steps.get(i).time() / THOUSAND;
             ys[i + 1] = steps.get(i).survival();
         }
-        xs[xs.length - 1] = budget;
+        xs[xs.length - 1] = budget / THOUSAND;
         ys[ys.length - 1] = steps.isEmpty() ? 1 : steps.get(steps.size() - 1).survival();
         chart.line(xs, ys, colour, 2f, shift);
         g.setColor(colour);
@@ -89,7 +92,7 @@ public final class CampaignFigure {
         for (CampaignTrial t : trials) {
             if (!t.falsified()) {
                 double s = KaplanMeier.survivalAt(steps, t.survivalTicks());
-                int px = (int) Math.round(chart.px(t.survivalTicks()) + shift);
+                int px = (int) Math.round(chart.px(t.survivalTicks() / THOUSAND) + shift);
                 int py = (int) Math.round(chart.py(s) - shift);
                 g.drawLine(px, py - 5, px, py + 5);
             }

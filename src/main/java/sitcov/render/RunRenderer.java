@@ -157,6 +157,18 @@ public final class RunRenderer {
     }
 
     /** A small dot at each closest approach, labelled last, those at about the same place sharing a label. */
+    /** Puts {@code item}, drawn at {@code p}, in the group of marks drawn at about the same place, or a new one. */
+    private static <T> void samePlace(List<Point2D> anchors, List<List<T>> groups, Point2D p, T item) {
+        for (int k = 0; k < groups.size(); k++) {
+            if (anchors.get(k).distance(p) < SAME_PLACE_PIXELS) {
+                groups.get(k).add(item);
+                return;
+            }
+        }
+        anchors.add(p);
+        groups.add(new ArrayList<>(List.of(item)));
+    }
+
     private static void closestApproaches(Graphics2D g, LabelPlacer labels, AffineTransform world, List<Closest> closest,
                                           double r) {
         List<Point2D> anchors = new ArrayList<>();
@@ -164,18 +176,7 @@ public final class RunRenderer {
         for (Closest c : closest) {
             Point2D p = world.transform(new Point2D.Double(c.x(), c.y()), null);
             RunMarks.closestDot(g, p.getX(), p.getY(), r);
-            int group = -1;
-            for (int k = 0; k < groups.size() && group < 0; k++) {
-                if (anchors.get(k).distance(p) < SAME_PLACE_PIXELS) {
-                    group = k;
-                }
-            }
-            if (group < 0) {
-                anchors.add(p);
-                groups.add(new ArrayList<>(List.of(c)));
-            } else {
-                groups.get(group).add(c);
-            }
+            samePlace(anchors, groups, p, c);
         }
         for (int k = 0; k < groups.size(); k++) {
             String text = "closest: " + groups.get(k).stream().map(Closest::text).collect(Collectors.joining(", "));
@@ -291,18 +292,7 @@ public final class RunRenderer {
             shown.add(a);
             at.add(p);
             labels.reserve(new Rectangle2D.Double(p.getX() - r, p.getY() - r, 2 * r, 2 * r));
-            int group = -1;
-            for (int k = 0; k < groups.size() && group < 0; k++) {
-                if (anchors.get(k).distance(p) < SAME_PLACE_PIXELS) {
-                    group = k;
-                }
-            }
-            if (group < 0) {
-                anchors.add(p);
-                groups.add(new ArrayList<>(List.of(a)));
-            } else {
-                groups.get(group).add(a);
-            }
+            samePlace(anchors, groups, p, a);
         }
         for (int i = shown.size() - 1; i >= 0; i--) { // the first accident on top
             new RunMarks(g, style).marker(shown.get(i).type(), at.get(i).getX(), at.get(i).getY(), r);

@@ -1,8 +1,10 @@
 package sitcov.drivers;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.random.RandomGenerator;
 import sitcov.experiment.Candidate;
@@ -30,7 +32,9 @@ import sitcov.world.WorldMap;
  * has found one wanders among its failing neighbours (a failure's edits often fail too). After
  * {@link #PATIENCE} steps that neither lowered the walk's least stress nor failed in a cell × accident
  * type not failed in before, the walk starts again from an elite of a cell that has not failed yet,
- * the less robust of two drawn (a tournament), so failures spread over cells. One
+ * the less robust of two drawn (a tournament), so failures spread over cells. Once the archive holds a
+ * failure, half the other steps edit a failing elite instead of annealing (measured on 15 failing maps:
+ * 47 % of their edits, 53 % of traffic reseeds and 73 % of new internal seeds failed again). One
  * candidate in {@link #EXPLORE_EVERY} is drawn at random and run if its cell is empty, so the archive
  * keeps growing. Every edit is paid for with a candidate of the stream, set aside, like
  * coverage-search's.
@@ -43,14 +47,13 @@ final class StressSearchDriver implements Driver {
     static final double COLD = 0.02;
     static final int PATIENCE = 20;
 
-    private record Elite(WorldMap map, double stress, int cell) {
+    private record Elite(WorldMap map, double stress) {
     }
 
     private final TreeMap<Integer, Elite> archive = new TreeMap<>();
-    private final java.util.Set<Integer> failed = new java.util.HashSet<>();
+    private final Set<Integer> failed = new HashSet<>();
     private WorldMap current;
     private double currentStress;
-
     private double bestOfWalk;
     private int stale;
     private int built;
@@ -102,7 +105,6 @@ final class StressSearchDriver implements Driver {
         if (walkStress < currentStress || u < Math.exp(-(walkStress - currentStress) / temperature)) {
             current = child.get();
             currentStress = walkStress;
-
         }
         if (stress < bestOfWalk || newFailure) {
             bestOfWalk = Math.min(bestOfWalk, stress);
@@ -155,7 +157,6 @@ final class StressSearchDriver implements Driver {
         Elite start = b.stress() < a.stress() ? b : a;
         current = start.map();
         currentStress = start.stress();
-
         bestOfWalk = currentStress;
         stale = 0;
     }
@@ -177,7 +178,7 @@ final class StressSearchDriver implements Driver {
         double stress = Math.max(Stress.FAILED, Stress.of(run.faultFree().margins()));
         Elite there = archive.get(run.cell());
         if (run.cell() >= 0 && (there == null || stress < there.stress())) {
-            archive.put(run.cell(), new Elite(map, stress, run.cell()));
+            archive.put(run.cell(), new Elite(map, stress));
         }
         return stress;
     }

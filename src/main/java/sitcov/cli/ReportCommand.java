@@ -39,35 +39,23 @@ final class ReportCommand implements Command {
             throw new UsageException("report: name one results folder, e.g. 'report target/results/smoke-seed1'.");
         }
         Path folder = Path.of(options.positional().get(0));
-        if (sitcov.results.CampaignManifest.isCampaign(folder)) {
-            return campaign(folder, out, err);
-        }
-        if (!Files.isRegularFile(folder.resolve(sitcov.results.ResultsFolder.MANIFEST))) {
+        boolean campaign = sitcov.results.CampaignManifest.isCampaign(folder);
+        if (!campaign && !Files.isRegularFile(folder.resolve(sitcov.results.ResultsFolder.MANIFEST))) {
             throw new UsageException("report: " + Options.shown(folder) + " is not a results folder (it has no "
                     + sitcov.results.ResultsFolder.MANIFEST + "); name the folder 'run' wrote.");
         }
         try {
-            Manifest manifest = Manifest.read(folder);
-            if (!manifest.checked()) {
-                err.println("sitcov: report: " + Manifest.uncheckedWarning(folder) + ".");
+            if (campaign) {
+                // a campaign's own files, written again from its faults' sub-folders (README, "Campaigns")
+                CampaignFinisher.report(folder);
+            } else {
+                Manifest manifest = Manifest.read(folder);
+                if (!manifest.checked()) {
+                    err.println("sitcov: report: " + Manifest.uncheckedWarning(folder) + ".");
+                }
+                Summary summary = ResultsFinisher.report(folder);
+                SummaryTable.print(out, manifest.config(), summary);
             }
-            Summary summary = ResultsFinisher.report(folder);
-            SummaryTable.print(out, manifest.config(), summary);
-            VerdictPrinter.print(out, folder);
-        } catch (IllegalArgumentException | IllegalStateException e) {
-            throw new UsageException("report: " + e.getMessage() + ".");
-        } catch (IOException e) {
-            err.println("sitcov: report: could not write into " + folder + ": " + e.getMessage());
-            return ExitCode.FAILURE;
-        }
-        out.println("Results written again in " + folder);
-        return ExitCode.OK;
-    }
-
-    /** A campaign's own files, written again from its faults' sub-folders (README, "Campaigns: falsifying one version"). */
-    private static int campaign(Path folder, PrintStream out, PrintStream err) throws UsageException {
-        try {
-            CampaignFinisher.report(folder);
             VerdictPrinter.print(out, folder);
         } catch (IllegalArgumentException | IllegalStateException e) {
             throw new UsageException("report: " + e.getMessage() + ".");

@@ -64,12 +64,13 @@ public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
                 Set<Long> here = new HashSet<>();
                 long found = 0;
                 for (MapRun m : run.maps()) {
-                    for (AccidentType t : types(m)) {
+                    List<AccidentType> types = types(m);
+                    for (AccidentType t : types) {
                         long key = (long) m.cell() * AccidentType.values().length + t.ordinal();
                         here.add(key);
                         pooled.add(key);
                     }
-                    found += types(m).isEmpty() ? 0 : 1;
+                    found += types.isEmpty() ? 0 : 1;
                 }
                 failures += found;
                 ticks += run.spend().ticks();

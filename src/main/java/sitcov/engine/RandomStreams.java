@@ -3,7 +3,6 @@ package sitcov.engine;
 import java.nio.charset.StandardCharsets;
 import java.util.HashMap;
 import java.util.Map;
-import java.util.SplittableRandom;
 import java.util.random.RandomGenerator;
 
 /**
@@ -11,8 +10,8 @@ import java.util.random.RandomGenerator;
  * and its label, so adding a new consumer (a new label) never shifts the numbers of another stream,
  * and the same (root, label) gives the same sequence on every machine and JDK.
  *
- * <p>The generator is {@link SplittableRandom} (SplitMix64), whose algorithm is fixed by its
- * specification. Instances are not thread-safe: each run owns its own streams.
+ * <p>The generator is SplitMix64 ({@link SplitMix}, the numbers of the JDK's {@code SplittableRandom}),
+ * whose algorithm is fixed by its specification. Instances are not thread-safe: each run owns its own streams.
  */
 public final class RandomStreams {
     private static final long FNV_OFFSET = 0xcbf29ce484222325L;
@@ -35,7 +34,7 @@ public final class RandomStreams {
      * consumers of a label share (and advance) one sequence rather than silently repeating it.
      */
     public RandomGenerator stream(String label) {
-        return streams.computeIfAbsent(checked(label), l -> new SplittableRandom(seedFor(l)));
+        return streams.computeIfAbsent(checked(label), l -> new SplitMix(seedFor(l)));
     }
 
     /** The seed the stream {@code label} starts from; use it to seed a child run or map. */

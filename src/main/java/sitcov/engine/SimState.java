@@ -1,5 +1,6 @@
 package sitcov.engine;
 
+import java.util.function.LongSupplier;
 import java.util.random.RandomGenerator;
 
 /**
@@ -7,7 +8,7 @@ import java.util.random.RandomGenerator;
  * one seed. Models keep their own state and hand it to their agents; this object only owns what
  * every model needs, so it stays small and final (composition, not MASON's subclassing).
  */
-public final class SimState {
+public final class SimState implements LongSupplier {
     /** The stream that orders agents of equal ordering within a tick. */
     public static final String SCHEDULE_STREAM = "schedule";
 
@@ -44,5 +45,11 @@ public final class SimState {
     /** The last tick that ran, or {@link Schedule#BEFORE_SIMULATION}. */
     public long tick() {
         return schedule.time();
+    }
+
+    /** The tick, for whatever stamps events with it; the state itself rather than a lambda, so a checkpoint copies it. */
+    @Override
+    public long getAsLong() {
+        return tick();
     }
 }

@@ -2,6 +2,7 @@ package sitcov.judge;
 
 import java.util.Set;
 import sitcov.control.ControllerFactory;
+import sitcov.engine.ModelCopy;
 import sitcov.engine.SimState;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
@@ -40,11 +41,23 @@ public final class LiveRun {
         this.internalSeed = internalSeed;
         this.faults = Set.copyOf(faults);
         this.state = new SimState(internalSeed);
-        this.switchboard = new FaultSwitchboard(faults, state::tick);
+        this.switchboard = new FaultSwitchboard(faults, state);
         this.scene = Scene.start(map, state, switchboard, controller);
         this.detector = new AccidentDetector(scene.telemetry());
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
         this.nearMisses = new NearMisses(scene.telemetry());
+    }
+
+    /**
+     * A checkpoint of this run: an independent run in this one's state (scene, controller, random
+     * streams, schedule, detector, near-miss watcher) that steps on exactly as this one would. The
+     * map is shared: nothing changes it. Only a run of the builtin car can be copied; a controller
+     * in another process keeps state no copy can reach.
+     *
+     * @throws IllegalStateException if the run's controller cannot be copied
+     */
+    public LiveRun copy() {
+        return ModelCopy.of(this, type -> type.getPackageName().equals("sitcov.world"));
     }
 
     /** Runs one tick; false once the run has ended (Target reached, timeout, or stopped). */

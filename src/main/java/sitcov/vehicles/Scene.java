@@ -1,7 +1,6 @@
 package sitcov.vehicles;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import java.util.random.RandomGenerator;
 import sitcov.control.Controller;
@@ -33,11 +32,9 @@ public final class Scene {
     private final List<Box> parkedBodies;
     private final JunctionOccupancy occupancy;
     private final SimState state;
-    private final List<MovingCar> movingCars = new ArrayList<>();
-    private final List<Vehicle> vehicles = new ArrayList<>();
-    // read-only views made once: callers ask for them many times a tick
-    private final List<MovingCar> movingCarsView = Collections.unmodifiableList(movingCars);
-    private final List<Vehicle> vehiclesView = Collections.unmodifiableList(vehicles);
+    // unmodifiable, set once the scene is built: callers ask for them many times a tick
+    private List<MovingCar> movingCars = List.of();
+    private List<Vehicle> vehicles = List.of();
     private AutonomousCar autonomousCar;
     private final Telemetry telemetry = new SceneTelemetry(this);
 
@@ -72,16 +69,22 @@ public final class Scene {
         map.layout().target().orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no Target"));
         Controller controller = controllers.start(new RunStart(map, state.seed(), state.streams(), state::tick, faults));
         AutonomousCar car = new AutonomousCar(scene, start, controller);
-        scene.setAutonomousCar(car);
+        scene.autonomousCar = car;
         state.schedule().scheduleRepeating(0, VEHICLE_ORDERING, 1, car);
+        List<MovingCar> moving = new ArrayList<>();
         RandomGenerator choices = state.random(MovingCar.CHOICES_STREAM);
         RandomGenerator respawns = state.random(MovingCar.RESPAWNS_STREAM);
         int id = AutonomousCar.ID + 1;
         for (StartPose pose : map.movingCars()) {
-            MovingCar moving = new MovingCar(id++, scene, pose, choices, respawns);
-            scene.addMovingCar(moving);
-            state.schedule().scheduleRepeating(0, VEHICLE_ORDERING, 1, moving);
+            MovingCar next = new MovingCar(id++, scene, pose, choices, respawns);
+            moving.add(next);
+            state.schedule().scheduleRepeating(0, VEHICLE_ORDERING, 1, next);
         }
+        List<Vehicle> all = new ArrayList<>();
+        all.add(car);
+        all.addAll(moving);
+        scene.movingCars = List.copyOf(moving);
+        scene.vehicles = List.copyOf(all);
         return scene;
     }
 
@@ -128,12 +131,12 @@ public final class Scene {
     }
 
     public List<MovingCar> movingCars() {
-        return movingCarsView;
+        return movingCars;
     }
 
     /** Every vehicle, the autonomous car first; check {@link Vehicle#isActive()} before using one. */
     public List<Vehicle> vehicles() {
-        return vehiclesView;
+        return vehicles;
     }
 
     /** Whether any active vehicle other than {@code self} has part of its footprint in the junction's square. */
@@ -151,13 +154,13 @@ public final class Scene {
         return false;
     }
 
-    void setAutonomousCar(AutonomousCar car) {
-        this.autonomousCar = car;
-        vehicles.add(0, car);
-    }
-
+    /** Adds a moving car to a scene built by hand, without a run (sensor tests). */
     void addMovingCar(MovingCar car) {
-        movingCars.add(car);
-        vehicles.add(car);
+        List<MovingCar> moving = new ArrayList<>(movingCars);
+        moving.add(car);
+        List<Vehicle> all = new ArrayList<>(vehicles);
+        all.add(car);
+        movingCars = List.copyOf(moving);
+        vehicles = List.copyOf(all);
     }
 }

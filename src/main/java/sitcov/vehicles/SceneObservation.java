@@ -1,7 +1,6 @@
 package sitcov.vehicles;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import sitcov.control.Channel;
 import sitcov.control.Observation;
@@ -25,8 +24,8 @@ final class SceneObservation implements Observation, RightOfWay {
     private final AutonomousCar car;
     private final List<Vehicle> traffic = new ArrayList<>();
     private final List<Box> obstacles = new ArrayList<>();
-    private final List<Vehicle> trafficView = Collections.unmodifiableList(traffic);
-    private final List<Box> obstaclesView = Collections.unmodifiableList(obstacles);
+    private final List<Vehicle> trafficView = new ReadOnlyView<>(traffic);
+    private final List<Box> obstaclesView = new ReadOnlyView<>(obstacles);
     private MarkingCamera camera;
     private Lidar lidar;
     private long cameraTick = -1;

@@ -14,4 +14,25 @@ public interface ControllerSource extends AutoCloseable {
     @Override
     default void close() {
     }
+
+    /** This source with every run run whole, never forked from a checkpoint ({@code --fork off}). */
+    default ControllerSource unforked() {
+        ControllerSource forked = this;
+        return new ControllerSource() {
+            @Override
+            public ControllerFactory forThisThread() {
+                return forked.forThisThread().unforked();
+            }
+
+            @Override
+            public String spec() {
+                return forked.spec();
+            }
+
+            @Override
+            public void close() {
+                forked.close();
+            }
+        };
+    }
 }

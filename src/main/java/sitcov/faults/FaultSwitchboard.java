@@ -11,23 +11,41 @@ import java.util.function.LongSupplier;
  * record of what each did. Seams call {@link #reached} when the faulty path runs and
  * {@link #effective} when it changed a value the car then used. With no fault active nothing is
  * recorded and nothing changes, so a fault-free run is the same with or without the machinery.
+ *
+ * <p>A <em>shadowing</em> board serves a fault-free run that watches faults it does not switch on:
+ * each watched fault's seam works out its faulty value beside the fault-free one, uses the
+ * fault-free one, and tells the board when the two would first differ ({@link #departs}). Until that
+ * tick a run with the fault on is the fault-free run tick for tick, so it can be forked from a
+ * checkpoint of the fault-free run there; a fault that never departs is judged without a run.
  */
 public final class FaultSwitchboard {
     private static final int N = Fault.values().length;
 
-    private final Set<Fault> active;
+    private final EnumSet<Fault> active;
     private final LongSupplier clock;
     private final boolean[] reached;
     private final long[] effectiveCount;
     private final long[] firstEffective;
+    private final EnumSet<Fault> shadowed;
+    private final long[] shadowReached;
+    private final long[] departed;
 
     public FaultSwitchboard(Set<Fault> active, LongSupplier clock) {
+        this(active, Set.of(), clock);
+    }
+
+    private FaultSwitchboard(Set<Fault> active, Set<Fault> shadowed, LongSupplier clock) {
         this.active = active.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(active);
         this.clock = clock;
         this.reached = new boolean[N];
         this.effectiveCount = new long[N];
         this.firstEffective = new long[N];
         java.util.Arrays.fill(firstEffective, -1);
+        this.shadowed = shadowed.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(shadowed);
+        this.shadowReached = new long[N];
+        this.departed = new long[N];
+        java.util.Arrays.fill(shadowReached, -1);
+        java.util.Arrays.fill(departed, -1);
     }
 
     private FaultSwitchboard(Set<Fault> active, FaultSwitchboard sharing) {
@@ -36,6 +54,14 @@ public final class FaultSwitchboard {
         this.reached = sharing.reached;
         this.effectiveCount = sharing.effectiveCount;
         this.firstEffective = sharing.firstEffective;
+        this.shadowed = sharing.shadowed;
+        this.shadowReached = sharing.shadowReached;
+        this.departed = sharing.departed;
+    }
+
+    /** A board for a fault-free run that watches {@code watched} from the shadows: none of them acts. */
+    public static FaultSwitchboard shadowing(Set<Fault> watched, LongSupplier clock) {
+        return new FaultSwitchboard(Set.of(), watched, clock);
     }
 
     /**
@@ -54,26 +80,81 @@ public final class FaultSwitchboard {
         return new FaultSwitchboard(Set.of(), () -> 0);
     }
 
+    /** Whether the fault's faulty values are used. */
     public boolean isActive(Fault fault) {
         return active.contains(fault);
+    }
+
+    /**
+     * Whether the fault's seam must work out its faulty value: the fault is on, or a fault-free run
+     * watches it and it has not yet departed (after that, nothing more is asked of its shadow).
+     */
+    public boolean watches(Fault fault) {
+        return active.contains(fault) || shadowed.contains(fault) && departed[fault.ordinal()] < 0;
     }
 
     public Set<Fault> activeFaults() {
         return EnumSet.copyOf(active.isEmpty() ? EnumSet.noneOf(Fault.class) : active);
     }
 
-    /** The faulty path of an active fault ran. */
+    /** The faulty path of a watched fault ran. */
     public void reached(Fault fault) {
-        reached[fault.ordinal()] = true;
+        int i = fault.ordinal();
+        if (shadowed.contains(fault)) {
+            if (shadowReached[i] < 0) {
+                shadowReached[i] = clock.getAsLong();
+            }
+            return;
+        }
+        reached[i] = true;
     }
 
-    /** An active fault changed a value the car then used. */
+    /** A watched fault changed a value the car then used (in the shadows: would have; so it departs). */
     public void effective(Fault fault) {
         int i = fault.ordinal();
+        if (shadowed.contains(fault)) {
+            reached(fault);
+            departs(fault);
+            return;
+        }
         reached[i] = true;
         if (effectiveCount[i]++ == 0) {
             firstEffective[i] = clock.getAsLong();
         }
+    }
+
+    /**
+     * A watched fault's faulty path left state or a value different from the fault-free run's, even
+     * if not yet one the car used (a waypoint registered under a reused identity, a steering bearing
+     * off by less than counts as effective). Only a shadowing board records it; a run with the fault on
+     * has departed by then anyway.
+     */
+    public void departs(Fault fault) {
+        int i = fault.ordinal();
+        if (shadowed.contains(fault) && departed[i] < 0) {
+            departed[i] = clock.getAsLong();
+        }
+    }
+
+    /** What a shadowing board saw of {@code fault}: when it would first have been reached and first departed. */
+    public Shadow shadow(Fault fault) {
+        if (!shadowed.contains(fault)) {
+            throw new IllegalArgumentException("fault " + fault.id() + " was not watched from the shadows");
+        }
+        return new Shadow(fault, shadowReached[fault.ordinal()], departed[fault.ordinal()]);
+    }
+
+    /**
+     * Switches {@code fault} on in a run forked from a checkpoint of the fault-free run at the start
+     * of the tick its fault departs; {@code reachedBefore} carries over whether its faulty path had
+     * already run in the ticks before.
+     */
+    public void switchOn(Fault fault, boolean reachedBefore) {
+        if (!shadowed.isEmpty() || !active.isEmpty()) {
+            throw new IllegalStateException("only a fault-free run's board can have a fault switched on");
+        }
+        active.add(fault);
+        reached[fault.ordinal()] = reachedBefore;
     }
 
     public Activation activation(Fault fault) {

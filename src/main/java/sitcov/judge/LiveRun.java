@@ -6,6 +6,7 @@ import sitcov.engine.ModelCopy;
 import sitcov.engine.SimState;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
+import sitcov.faults.Shadow;
 import sitcov.oracle.AccidentDetector;
 import sitcov.oracle.Margins;
 import sitcov.oracle.NearMisses;
@@ -22,7 +23,7 @@ import sitcov.world.WorldMap;
 public final class LiveRun {
     private final WorldMap map;
     private final long internalSeed;
-    private final Set<Fault> faults;
+    private Set<Fault> faults;
     private final SimState state;
     private final FaultSwitchboard switchboard;
     private final Scene scene;
@@ -37,11 +38,16 @@ public final class LiveRun {
 
     /** A run of the controller {@code controller} makes, with {@code faults} switched on (for a controller that knows them). */
     public LiveRun(WorldMap map, long internalSeed, Set<Fault> faults, ControllerFactory controller) {
+        this(map, internalSeed, faults, Set.of(), controller);
+    }
+
+    private LiveRun(WorldMap map, long internalSeed, Set<Fault> faults, Set<Fault> watched, ControllerFactory controller) {
         this.map = map;
         this.internalSeed = internalSeed;
         this.faults = Set.copyOf(faults);
         this.state = new SimState(internalSeed);
-        this.switchboard = new FaultSwitchboard(faults, state);
+        this.switchboard = watched.isEmpty() ? new FaultSwitchboard(faults, state)
+                : FaultSwitchboard.shadowing(watched, state);
         this.scene = Scene.start(map, state, switchboard, controller);
         this.detector = new AccidentDetector(scene.telemetry());
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
@@ -58,6 +64,33 @@ public final class LiveRun {
      */
     public LiveRun copy() {
         return ModelCopy.of(this, type -> type.getPackageName().equals("sitcov.world"));
+    }
+
+    /**
+     * A fault-free run that watches {@code watched} from the shadows: it runs as any fault-free run
+     * does, and tells when each watched fault would first have made a run differ ({@link #shadow}).
+     */
+    static LiveRun watching(WorldMap map, long internalSeed, Set<Fault> watched, ControllerFactory controller) {
+        if (watched.isEmpty()) {
+            throw new IllegalArgumentException("a run watching faults from the shadows needs faults to watch");
+        }
+        return new LiveRun(map, internalSeed, Set.of(), watched, controller);
+    }
+
+    /** What this run, {@link #watching} {@code fault}, saw of it so far. */
+    Shadow shadow(Fault fault) {
+        return switchboard.shadow(fault);
+    }
+
+    /**
+     * A copy of this fault-free run with {@code fault} switched on from now: taken at the start of
+     * the tick the fault departs, it goes on exactly as a run with the fault on from tick 0 would.
+     */
+    LiveRun forkWith(Fault fault, boolean reachedBefore) {
+        LiveRun fork = copy();
+        fork.switchboard.switchOn(fault, reachedBefore);
+        fork.faults = Set.of(fault);
+        return fork;
     }
 
     /** Runs one tick; false once the run has ended (Target reached, timeout, or stopped). */

@@ -32,6 +32,9 @@ public final class MapRunner {
     /** As {@link #judge(WorldMap, long, List, FaultyRuns)}, every run driven by the controller {@code controller} makes. */
     public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length,
                                   ControllerFactory controller) {
+        if (controller.copyable() && !faults.isEmpty() && Set.copyOf(faults).size() == faults.size()) {
+            return ForkedRuns.judge(map, internalSeed, faults, length, controller);
+        }
         RunResult faultFree = Simulator.run(map, internalSeed, Set.of(), RunObserver.NONE, controller).result();
         List<FaultVerdict> verdicts = new ArrayList<>(faults.size());
         for (Fault fault : faults) {

@@ -38,7 +38,11 @@ public final class Simulator {
 
     private static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer,
                                  VerdictWatch watch, ControllerFactory controller) {
-        LiveRun run = new LiveRun(map, internalSeed, faults, controller);
+        return drive(new LiveRun(map, internalSeed, faults, controller), observer, watch);
+    }
+
+    /** Steps {@code run} to its end, or to its verdict against the run {@code watch} holds (when not null). */
+    static RunRecord drive(LiveRun run, RunObserver observer, VerdictWatch watch) {
         while (run.step()) {
             observer.afterTick(run.tick(), run.telemetry(), run.detector());
             if (watch != null && watch.settled(run.detector())) {

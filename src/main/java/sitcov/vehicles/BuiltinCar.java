@@ -8,6 +8,7 @@ import sitcov.control.Controller;
 import sitcov.control.ControllerFactory;
 import sitcov.control.ControllerSource;
 import sitcov.control.Observation;
+import sitcov.control.RunStart;
 import sitcov.control.Vehicle;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
@@ -45,8 +46,9 @@ public final class BuiltinCar implements Controller, Bodied {
     private final Body body;
     private Observation now;
     private final JunctionRequests rightOfWay = new JunctionRequests();
-    private final CameraSettings cameraSettings;
     private final MarkingCamera camera;
+    /** A camera for each camera fault a fault-free run watches from the shadows, made when first needed. */
+    private final MarkingCamera[] shadowCameras = new MarkingCamera[CameraFaults.CAMERA.size()];
     private final Lidar lidar;
     private final TrafficSensor traffic = new TrafficSensor();
     private final Waypoints waypoints;
@@ -72,7 +74,6 @@ public final class BuiltinCar implements Controller, Bodied {
         this.faults = faults;
         this.body = new Body(start.position().x(), start.position().y(), start.heading().bearing(), REAR_AXLE);
         this.lane = start.heading();
-        this.cameraSettings = CameraFaults.settings(faults);
         this.camera = new MarkingCamera(roads);
         this.lidar = new Lidar(roads);
         this.waypoints = new Waypoints(faults);
@@ -82,8 +83,18 @@ public final class BuiltinCar implements Controller, Bodied {
     }
 
     /** The builtin car of each run, with the run's faults switched on. */
-    public static final ControllerFactory FACTORY =
-            run -> new BuiltinCar(run.map(), run.faults(), run.streams().stream(DECISIONS_STREAM));
+    public static final ControllerFactory FACTORY = new ControllerFactory() {
+        @Override
+        public Controller start(RunStart run) {
+            return new BuiltinCar(run.map(), run.faults(), run.streams().stream(DECISIONS_STREAM));
+        }
+
+        /** All its state is in its own objects, which a checkpoint of the run copies. */
+        @Override
+        public boolean copyable() {
+            return true;
+        }
+    };
 
     /**
      * The builtin car with {@code planted} always on, whatever the run switches on: a version of it
@@ -143,11 +154,14 @@ public final class BuiltinCar implements Controller, Bodied {
     }
 
     private LaneEstimate lookForMarkings() {
-        LaneEstimate seen = camera.look(body.x(), body.y(), lane, cameraSettings);
+        CameraSettings settings = CameraFaults.settings(faults);
+        LaneEstimate seen = camera.look(body.x(), body.y(), lane, settings);
         camera.keepHits();
-        if (cameraSettings != CameraSettings.STANDARD) {
+        if (settings != CameraSettings.STANDARD) {
             LaneEstimate correct = camera.look(body.x(), body.y(), lane, CameraSettings.STANDARD);
             CameraFaults.record(faults, !seen.equals(correct));
+        } else {
+            CameraFaults.watchFromShadows(faults, shadowCameras, camera, body.x(), body.y(), lane, seen);
         }
         // Driving its lane, the car is never far off its lane centre: a sighting that says so is
         // another road's lines, seen across a junction, and is not believed.
@@ -192,14 +206,18 @@ public final class BuiltinCar implements Controller, Bodied {
     private void crawl() {
         if (body.speed() < Dynamics.CRAWL_FLOOR) {
             body.accelerate();
-            if (faults.isActive(Fault.CRAWL_DOUBLE_ACCELERATION)) {
-                body.accelerate();
+            if (faults.watches(Fault.CRAWL_DOUBLE_ACCELERATION)) {
+                if (faults.isActive(Fault.CRAWL_DOUBLE_ACCELERATION)) {
+                    body.accelerate();
+                }
                 faults.effective(Fault.CRAWL_DOUBLE_ACCELERATION);
             }
         } else if (body.speed() >= Dynamics.CRAWL_CEILING) {
             body.brake();
-            if (faults.isActive(Fault.CRAWL_DOUBLE_BRAKING)) {
-                body.brake();
+            if (faults.watches(Fault.CRAWL_DOUBLE_BRAKING)) {
+                if (faults.isActive(Fault.CRAWL_DOUBLE_BRAKING)) {
+                    body.brake();
+                }
                 faults.effective(Fault.CRAWL_DOUBLE_BRAKING);
             }
         }

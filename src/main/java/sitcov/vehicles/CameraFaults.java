@@ -3,6 +3,7 @@ package sitcov.vehicles;
 import java.util.List;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
+import sitcov.geom.Compass;
 
 /** Faults 8–13 degrade the road-marking camera's settings. */
 final class CameraFaults {
@@ -13,19 +14,69 @@ final class CameraFaults {
     private CameraFaults() {
     }
 
-    /** The camera settings with every active camera fault applied; STANDARD itself when none is active. */
+    /** The settings of each set of camera faults, indexed by the set's bits in {@link #CAMERA} order. */
+    private static final CameraSettings[] BY_SET = new CameraSettings[1 << 6];
+
+    static {
+        for (int set = 0; set < BY_SET.length; set++) {
+            BY_SET[set] = degraded(set);
+        }
+    }
+
+    /**
+     * The camera settings with every active camera fault applied; STANDARD itself when none is
+     * active. Asked each tick: a run forked from the fault-free one switches its fault on mid-run.
+     */
     static CameraSettings settings(FaultSwitchboard faults) {
+        int set = 0;
+        for (int k = 0; k < CAMERA.size(); k++) {
+            if (faults.isActive(CAMERA.get(k))) {
+                set |= 1 << k;
+            }
+        }
+        return BY_SET[set];
+    }
+
+    /** The settings {@code fault} alone leaves the camera. */
+    static CameraSettings alone(Fault fault) {
+        return BY_SET[1 << CAMERA.indexOf(fault)];
+    }
+
+    private static CameraSettings degraded(int set) {
         CameraSettings s = CameraSettings.STANDARD;
-        if (CAMERA.stream().noneMatch(faults::isActive)) {
+        if (set == 0) {
             return s;
         }
-        double left = faults.isActive(Fault.MARKING_ARC_FIRST_HALF_REMOVED) ? 0 : s.leftArc();
-        double right = faults.isActive(Fault.MARKING_ARC_SECOND_HALF_REMOVED) ? 0 : s.rightArc();
-        double angular = s.angularStep() * (faults.isActive(Fault.MARKING_HALF_ANGULAR_RESOLUTION) ? 2 : 1);
-        double start = faults.isActive(Fault.MARKING_SCAN_STARTS_HALF_WAY) ? s.range() / 2 : s.rangeStart();
-        double range = s.range() / (faults.isActive(Fault.MARKING_HALF_RANGE) ? 2 : 1);
-        double step = s.rangeStep() * (faults.isActive(Fault.MARKING_HALF_RANGE_RESOLUTION) ? 2 : 1);
+        double left = (set & 1) != 0 ? 0 : s.leftArc();
+        double right = (set & 2) != 0 ? 0 : s.rightArc();
+        double angular = s.angularStep() * ((set & 4) != 0 ? 2 : 1);
+        double start = (set & 8) != 0 ? s.range() / 2 : s.rangeStart();
+        double range = s.range() / ((set & 16) != 0 ? 2 : 1);
+        double step = s.rangeStep() * ((set & 32) != 0 ? 2 : 1);
         return new CameraSettings(left, right, range, angular, step, start);
+    }
+
+    /**
+     * For a fault-free run watching camera faults from the shadows: looks again with each watched
+     * fault's settings, with a camera of its own (so the car's camera keeps the fault-free car's
+     * state), and records whether it would have seen the lane otherwise than {@code seen}.
+     */
+    static void watchFromShadows(FaultSwitchboard faults, MarkingCamera[] cameras, MarkingCamera template,
+                                 double x, double y, Compass lane, LaneEstimate seen) {
+        for (int k = 0; k < CAMERA.size(); k++) {
+            Fault f = CAMERA.get(k);
+            if (faults.watches(f) && !faults.isActive(f)) {
+                if (cameras[k] == null) {
+                    cameras[k] = template.another();
+                }
+                LaneEstimate degraded = cameras[k].look(x, y, lane, BY_SET[1 << k]);
+                if (degraded.equals(seen)) {
+                    faults.reached(f);
+                } else {
+                    faults.effective(f);
+                }
+            }
+        }
     }
 
     /** Records a scan with the degraded camera: effective when it saw the lane differently. */

@@ -186,13 +186,17 @@ final class JunctionDriver {
         }
         waiting = true;
         waitedFor = next.id();
-        if (faults.isActive(Fault.CREEPS_WHILE_WAITING)) {
-            intent.crawl();
+        if (faults.watches(Fault.CREEPS_WHILE_WAITING)) {
             if (car.speed() > 0 || d > WAIT_SHORT_OF_SQUARE) {
                 faults.effective(Fault.CREEPS_WHILE_WAITING);
             } else {
                 faults.reached(Fault.CREEPS_WHILE_WAITING);
             }
+            // crawling is another intent than stopping, even for a car already stopped at the line
+            faults.departs(Fault.CREEPS_WHILE_WAITING);
+        }
+        if (faults.isActive(Fault.CREEPS_WHILE_WAITING)) {
+            intent.crawl();
         } else {
             intent.stopWithin(d - WAIT_SHORT_OF_SQUARE, "junction");
         }
@@ -238,7 +242,7 @@ final class JunctionDriver {
 
     /** Fault 7: only the first half of the junctions (in map order) is recognised. */
     private boolean recognises(Junction junction) {
-        if (!faults.isActive(Fault.HALF_THE_JUNCTIONS)) {
+        if (!faults.watches(Fault.HALF_THE_JUNCTIONS)) {
             return true;
         }
         int half = car.roads().junctions().size() / 2;
@@ -247,7 +251,7 @@ final class JunctionDriver {
             return true;
         }
         faults.effective(Fault.HALF_THE_JUNCTIONS);
-        return false;
+        return !faults.isActive(Fault.HALF_THE_JUNCTIONS);
     }
 
     private void startCrossing(Junction junction, Compass lane) {

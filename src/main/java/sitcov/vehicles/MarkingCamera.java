@@ -48,6 +48,11 @@ final class MarkingCamera {
         this.roadReach = new RoadReach(network);
     }
 
+    /** Another camera on the same roads, with buffers and looks of its own. */
+    MarkingCamera another() {
+        return new MarkingCamera(network);
+    }
+
     /**
      * Looks from ({@code x}, {@code y}) around {@code lane} and estimates where the lane is. The
      * markings and the road never move, so a car standing where it stood at its last look with

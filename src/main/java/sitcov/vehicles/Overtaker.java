@@ -159,13 +159,18 @@ final class Overtaker {
             double turn = Bearing.turn(lane.bearing(), bearing);
             bearing = lane.bearing() + Math.max(-MAX_PULL_OUT_ANGLE, Math.min(MAX_PULL_OUT_ANGLE, turn));
         }
-        if (faults.isActive(Fault.STOPS_TURNING_WHILE_OVERTAKING)) {
+        if (faults.watches(Fault.STOPS_TURNING_WHILE_OVERTAKING)) {
             if (Math.abs(Bearing.turn(car.heading(), bearing)) > 1e-9) {
                 faults.effective(Fault.STOPS_TURNING_WHILE_OVERTAKING);
             } else {
                 faults.reached(Fault.STOPS_TURNING_WHILE_OVERTAKING);
             }
-            bearing = car.heading();
+            if (Double.compare(bearing, car.heading()) != 0) {
+                faults.departs(Fault.STOPS_TURNING_WHILE_OVERTAKING); // a turn too small to count still steers
+            }
+            if (faults.isActive(Fault.STOPS_TURNING_WHILE_OVERTAKING)) {
+                bearing = car.heading();
+            }
         }
         intent.steer(bearing, "overtaking");
     }
@@ -175,8 +180,10 @@ final class Overtaker {
             case START -> {
                 ParkedCarSightings.Sighting s = sightings.look(lane, laneCentre);
                 double farthest = Double.isNaN(s.farthest()) ? PARKED_CAR_LENGTH : s.farthest();
-                if (faults.isActive(Fault.SECOND_PULL_OUT) && farthest > 6) {
+                if (faults.watches(Fault.SECOND_PULL_OUT) && farthest > 6) {
                     faults.effective(Fault.SECOND_PULL_OUT);
+                }
+                if (faults.isActive(Fault.SECOND_PULL_OUT) && farthest > 6) {
                     replace(farthest - BUFFER, LaneFrame.v(lane, car.x(), car.y(), reached.x(), reached.y()) + PULL_OUT,
                             Waypoint.Kind.OVERTAKE_START);
                     return;
@@ -295,14 +302,16 @@ final class Overtaker {
         TrafficSensor traffic = car.traffic();
         double ticks = ticksToTravel(finish);
         boolean clearOfOncoming = clearOf(traffic.oncomingGap(), traffic.oncomingSpeed(), ticks, finish);
-        if (faults.isActive(Fault.ONCOMING_AT_HALF_SPEED) && Double.isFinite(traffic.oncomingGap())) {
+        if (faults.watches(Fault.ONCOMING_AT_HALF_SPEED) && Double.isFinite(traffic.oncomingGap())) {
             boolean misjudged = clearOf(traffic.oncomingGap(), traffic.oncomingSpeed() / 2, ticks, finish);
             if (misjudged != clearOfOncoming) {
                 faults.effective(Fault.ONCOMING_AT_HALF_SPEED);
             } else {
                 faults.reached(Fault.ONCOMING_AT_HALF_SPEED);
             }
-            clearOfOncoming = misjudged;
+            if (faults.isActive(Fault.ONCOMING_AT_HALF_SPEED)) {
+                clearOfOncoming = misjudged;
+            }
         }
         // anything in the other lane where the pass will be (a car standing there, one alongside)
         return clearOfOncoming && traffic.otherLaneGap() > finish + SAFETY_MARGIN;

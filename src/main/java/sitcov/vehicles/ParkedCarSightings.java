@@ -31,9 +31,8 @@ final class ParkedCarSightings {
     /** Sweeps along {@code lane} and reads the parked cars ahead and on the other side. */
     Sighting look(Compass lane, double laneCentre) {
         Lidar lidar = car.lidar();
-        if (!faults.isActive(Fault.OBSTACLE_SEARCH_ALONG_HEADING)) {
-            lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.obstacles(), car.trafficTracks(), car);
-            return sighting(lidar, laneCentre, 0);
+        if (!faults.watches(Fault.OBSTACLE_SEARCH_ALONG_HEADING)) {
+            return alongLane(lidar, lane, laneCentre);
         }
         // the faulty car takes the road to run along its heading: hits are read in the heading's frame
         int hits = lidar.sweep(car.x(), car.y(), car.heading(), lane, car.obstacles(), car.trafficTracks(), car);
@@ -43,7 +42,21 @@ final class ParkedCarSightings {
         } else {
             faults.reached(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
         }
-        return faulty;
+        if (faults.isActive(Fault.OBSTACLE_SEARCH_ALONG_HEADING)) {
+            return faulty;
+        }
+        // watched from the shadows: the lidar is left as the fault-free car leaves it, whose sweep
+        // another heading than the lane's already departs from
+        Sighting correct = alongLane(lidar, lane, laneCentre);
+        if (Double.compare(car.heading(), lane.bearing()) != 0 || !faulty.equals(correct)) {
+            faults.departs(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
+        }
+        return correct;
+    }
+
+    private Sighting alongLane(Lidar lidar, Compass lane, double laneCentre) {
+        lidar.sweep(car.x(), car.y(), lane.bearing(), lane, car.obstacles(), car.trafficTracks(), car);
+        return sighting(lidar, laneCentre, 0);
     }
 
     /** Parked cars in the lane ahead and on the other side, with the hits turned by {@code phi} first. */

@@ -44,14 +44,16 @@ final class TargetSeeker {
         }
         double laneCentre = estimate.laneCentre();
         if (!inLane(v, laneCentre)) {
-            if (u <= DIRECT_DISTANCE && faults.isActive(Fault.TARGET_LANE_CHECK_SKIPPED)) {
+            if (u <= DIRECT_DISTANCE && faults.watches(Fault.TARGET_LANE_CHECK_SKIPPED)) {
                 faults.effective(Fault.TARGET_LANE_CHECK_SKIPPED);
+            }
+            if (u <= DIRECT_DISTANCE && faults.isActive(Fault.TARGET_LANE_CHECK_SKIPPED)) {
                 intent.stopWithin(Math.max(0, u), "target");
                 intent.steer(Bearing.between(car.x(), car.y(), target.position().x(), target.position().y()), "target");
             }
             return;
         }
-        if (u <= DIRECT_DISTANCE && faults.isActive(Fault.TARGET_LANE_CHECK_SKIPPED)) {
+        if (u <= DIRECT_DISTANCE && faults.watches(Fault.TARGET_LANE_CHECK_SKIPPED)) {
             faults.reached(Fault.TARGET_LANE_CHECK_SKIPPED);
         }
         intent.stopWithin(Math.max(0, u), "target");

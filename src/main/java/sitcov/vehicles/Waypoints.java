@@ -31,16 +31,22 @@ final class Waypoints {
         double py = y;
         // displacements add up when several are on, so each fault of a set acts
         for (Fault f : DISPLACEMENTS) {
-            if (faults.isActive(f)) {
-                px += f == Fault.WAYPOINTS_NORTH_WEST || f == Fault.WAYPOINTS_SOUTH_WEST ? -1 : 1;
-                py += f == Fault.WAYPOINTS_NORTH_WEST || f == Fault.WAYPOINTS_NORTH_EAST ? -1 : 1;
+            if (faults.watches(f)) {
+                if (faults.isActive(f)) {
+                    px += f == Fault.WAYPOINTS_NORTH_WEST || f == Fault.WAYPOINTS_SOUTH_WEST ? -1 : 1;
+                    py += f == Fault.WAYPOINTS_NORTH_WEST || f == Fault.WAYPOINTS_NORTH_EAST ? -1 : 1;
+                }
                 faults.effective(f);
             }
         }
         int id = nextId++;
-        if (faults.isActive(Fault.STALE_WAYPOINT_IDENTITY) && lastId != 0) {
+        if (faults.watches(Fault.STALE_WAYPOINT_IDENTITY) && lastId != 0) {
             faults.reached(Fault.STALE_WAYPOINT_IDENTITY);
-            id = lastId;
+            // the reused identity is state the fault-free car does not have, effective or not
+            faults.departs(Fault.STALE_WAYPOINT_IDENTITY);
+            if (faults.isActive(Fault.STALE_WAYPOINT_IDENTITY)) {
+                id = lastId;
+            }
         }
         lastId = id;
         registered.add(new Waypoint(id, px, py, kind));

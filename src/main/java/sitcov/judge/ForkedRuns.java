@@ -1,0 +1,65 @@
+package sitcov.judge;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
+import sitcov.control.ControllerFactory;
+import sitcov.faults.Activation;
+import sitcov.faults.Fault;
+import sitcov.faults.Shadow;
+import sitcov.oracle.RunResult;
+import sitcov.world.WorldMap;
+
+/**
+ * Judges a map without re-running what a fault does not change. The fault-free run watches every
+ * fault from the shadows; a fault that never departs from it is judged from it (its faulty run
+ * would be the same run), and every other faulty run starts from a checkpoint of the fault-free run
+ * at the start of the tick its fault departs, taken from a second fault-free run stepped forward
+ * from one departure to the next. The verdicts are those of whole runs, byte for byte: a faulty run
+ * is the fault-free run tick for tick until its fault departs.
+ */
+final class ForkedRuns {
+    private ForkedRuns() {
+    }
+
+    static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length,
+                           ControllerFactory controller) {
+        LiveRun watching = LiveRun.watching(map, internalSeed, EnumSet.copyOf(faults), controller);
+        RunResult faultFree = Simulator.drive(watching, RunObserver.NONE, null).result();
+        FaultVerdict[] verdicts = new FaultVerdict[faults.size()];
+        List<Integer> departing = new ArrayList<>();
+        for (int i = 0; i < faults.size(); i++) {
+            Shadow shadow = watching.shadow(faults.get(i));
+            if (shadow.departs()) {
+                departing.add(i);
+            } else {
+                verdicts[i] = DifferentialOracle.judge(faultFree, unchanged(faultFree, shadow), shadow.fault());
+            }
+        }
+        departing.sort(Comparator.comparingLong(i -> watching.shadow(faults.get(i)).departureTick()));
+        LiveRun feeder = departing.isEmpty() ? null : new LiveRun(map, internalSeed, Set.of(), controller);
+        for (int i : departing) {
+            Shadow shadow = watching.shadow(faults.get(i));
+            long departs = shadow.departureTick();
+            while (feeder.tick() < departs - 1) {
+                feeder.step();
+            }
+            LiveRun faulty = feeder.forkWith(shadow.fault(), shadow.reachedBefore(departs));
+            VerdictWatch watch = length == FaultyRuns.UNTIL_VERDICT ? new VerdictWatch(faultFree) : null;
+            verdicts[i] = DifferentialOracle.judge(faultFree, Simulator.drive(faulty, RunObserver.NONE, watch),
+                    shadow.fault());
+        }
+        return new JudgedMap(faultFree, List.of(verdicts));
+    }
+
+    /** The record of a faulty run that never departed from the fault-free run: that run, and what the fault did in it. */
+    private static RunRecord unchanged(RunResult faultFree, Shadow shadow) {
+        List<Activation> activations = new ArrayList<>(Fault.values().length);
+        for (Fault f : Fault.values()) {
+            activations.add(f == shadow.fault() ? shadow.activation() : new Activation(f, false, false, 0, -1));
+        }
+        return new RunRecord(faultFree, Set.of(shadow.fault()), activations);
+    }
+}

@@ -31,10 +31,12 @@ import sitcov.results.ResultsFolder;
 final class CampaignRun {
     private final Drivers drivers;
     private final int threads;
+    private final boolean fork;
     private final PrintStream out;
     private final PrintStream err;
 
-    CampaignRun(Drivers drivers, int threads, PrintStream out, PrintStream err) {
+    CampaignRun(Drivers drivers, int threads, boolean fork, PrintStream out, PrintStream err) {
+        this.fork = fork;
         this.drivers = drivers;
         this.threads = threads;
         this.out = out;
@@ -157,7 +159,7 @@ final class CampaignRun {
         ProgressListener progress = new ProgressListener(err, err == System.err && System.console() != null,
                 System::nanoTime);
         ExperimentRunner runner = new ExperimentRunner(config, drivers, Shard.WHOLE, recorder.journal(), threads,
-                System::nanoTime, List.of(recorder, progress), controllers);
+                System::nanoTime, List.of(recorder, progress), fork ? controllers : controllers.unforked());
         err.println("run: fault " + f.id() + " (" + n + " of " + c.faults().size() + "), into " + sub);
         try (controllers) {
             runner.run();

@@ -5,7 +5,9 @@ import java.util.List;
 import java.util.Set;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
+import sitcov.control.ControllerFactory;
 import sitcov.judge.FaultCalibration;
+import sitcov.vehicles.BuiltinCar;
 
 /**
  * {@code faults}: lists the catalogue; with {@code --calibrate --maps N}, runs every fault of a
@@ -22,7 +24,7 @@ final class FaultsCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "[--calibrate --maps N [--seed S0 (default: 1)] [--faults SET (default: ALL)] [--threads T]]";
+        return "[--calibrate --maps N [--seed S0 (default: 1)] [--faults SET (default: ALL)] [--threads T] [--fork on|off]]";
     }
 
     @Override
@@ -32,11 +34,11 @@ final class FaultsCommand implements Command {
 
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
-        Options options = Options.parse(name(), args, Set.of("--maps", "--seed", "--faults", "--threads"),
+        Options options = Options.parse(name(), args, Set.of("--maps", "--seed", "--faults", "--threads", "--fork"),
                 Set.of("--calibrate"));
         options.noPositional();
         if (!options.has("--calibrate")) {
-            for (String calibrationOnly : List.of("--maps", "--seed", "--faults", "--threads")) {
+            for (String calibrationOnly : List.of("--maps", "--seed", "--faults", "--threads", "--fork")) {
                 if (options.has(calibrationOnly)) {
                     throw new UsageException("faults: " + calibrationOnly + " goes with --calibrate; add --calibrate"
                             + " to run the faults, or drop it to list them.");
@@ -55,7 +57,8 @@ final class FaultsCommand implements Command {
         int threads = options.threads(err);
         Progress progress = new Progress(err, "faults", maps,
                 err == System.err && System.console() != null, System::nanoTime);
-        var results = FaultCalibration.run(first, maps, faults, threads, progress::done);
+        ControllerFactory car = options.forks() ? BuiltinCar.FACTORY : BuiltinCar.FACTORY.unforked();
+        var results = FaultCalibration.run(first, maps, faults, threads, car, progress::done);
         new FaultCalibrationTable(first, maps, faults, results).print(out);
         return ExitCode.OK;
     }

@@ -157,6 +157,21 @@ final class Options {
         return asked;
     }
 
+    /**
+     * Whether faulty runs are forked from the fault-free run ({@code --fork on}, the default) or run
+     * whole ({@code --fork off}, to check that both give the same bytes). Only the speed differs.
+     */
+    boolean forks() throws UsageException {
+        Optional<String> fork = value("--fork");
+        if (fork.isEmpty() || fork.get().equals("on")) {
+            return true;
+        }
+        if (fork.get().equals("off")) {
+            return false;
+        }
+        throw new UsageException(command + ": --fork takes on or off, not '" + fork.get() + "'.");
+    }
+
     /** A file to read: it must exist and be a readable file. */
     Optional<Path> inputFile(String name) throws UsageException {
         Optional<Path> path = path(name);

@@ -31,6 +31,8 @@ import sitcov.results.ResultsFolder;
  */
 final class RunCommand implements Command {
     private final Drivers drivers;
+    /** This invocation's --fork: set first thing in {@link #run}. */
+    private boolean fork = true;
 
     RunCommand(Drivers drivers) {
         this.drivers = drivers;
@@ -43,9 +45,9 @@ final class RunCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "PRESET [--out DIR (default: target/results/PRESET-seedS)] [--seed MASTER] [--replications N] [--threads T]"
+        return "PRESET [--out DIR (default: target/results/PRESET-seedS)] [--seed MASTER] [--replications N] [--threads T] [--fork on|off]"
                 + " [--shard K/N] [--dry-run]\n"
-                + "       " + Main.PROGRAM + " run --resume DIR [--threads T]";
+                + "       " + Main.PROGRAM + " run --resume DIR [--threads T] [--fork on|off]";
     }
 
     @Override
@@ -55,9 +57,10 @@ final class RunCommand implements Command {
 
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
-        Options options = Options.parse(name(), args, Set.of("--out", "--seed", "--replications", "--threads", "--shard",
+        Options options = Options.parse(name(), args, Set.of("--out", "--seed", "--replications", "--threads", "--fork", "--shard",
                 "--resume", "--controller"), Set.of("--dry-run"));
         int threads = options.threads(err);
+        fork = options.forks();
         if (options.value("--resume").isPresent()) {
             if (options.has("--dry-run")) {
                 throw new UsageException("run: --dry-run checks a preset before it runs; it does not go with --resume.");
@@ -120,7 +123,7 @@ final class RunCommand implements Command {
             return ExitCode.OK;
         }
         Path folder = folder(options, c.name(), c.masterSeed(), c.trials(), Shard.WHOLE);
-        return new CampaignRun(drivers, threads, out, err).start(c, folder);
+        return new CampaignRun(drivers, threads, fork, out, err).start(c, folder);
     }
 
     private static ResultsRecorder create(Path folder, Manifest manifest, Map<String, String> execution)
@@ -140,7 +143,7 @@ final class RunCommand implements Command {
     private int resume(Options options, int threads, PrintStream out, PrintStream err) throws UsageException {
         if (!options.positional().isEmpty() || options.has("--out") || options.has("--seed") || options.has("--shard")
                 || options.has("--replications")) {
-            throw new UsageException("run: --resume DIR takes everything from DIR's manifest; give only --threads beside it.");
+            throw new UsageException("run: --resume DIR takes everything from DIR's manifest; give only --threads and --fork beside it.");
         }
         Path folder = Path.of(options.value("--resume").get());
         if (folder.toString().isEmpty() || !Files.isDirectory(folder)) {
@@ -148,7 +151,7 @@ final class RunCommand implements Command {
                     + " of the run to resume.");
         }
         if (CampaignManifest.isCampaign(folder)) {
-            return new CampaignRun(drivers, threads, out, err).resume(folder);
+            return new CampaignRun(drivers, threads, fork, out, err).resume(folder);
         }
         Manifest manifest;
         try {
@@ -192,7 +195,7 @@ final class RunCommand implements Command {
         ProgressListener progress = new ProgressListener(err, err == System.err && System.console() != null,
                 System::nanoTime);
         ExperimentRunner runner = new ExperimentRunner(config, drivers, manifest.shard(), recorder.journal(), threads,
-                System::nanoTime, List.of(recorder, progress), controllers);
+                System::nanoTime, List.of(recorder, progress), fork ? controllers : controllers.unforked());
         err.println(plan(runner, config, manifest.shard(), threads) + ", into " + folder + note);
         try (controllers) {
             runner.run();

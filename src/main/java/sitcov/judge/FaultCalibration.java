@@ -6,6 +6,8 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.function.IntConsumer;
+import sitcov.control.ControllerFactory;
+import sitcov.vehicles.BuiltinCar;
 import sitcov.faults.Fault;
 import sitcov.world.MapGenerator;
 
@@ -20,12 +22,18 @@ public final class FaultCalibration {
 
     /** The judged maps, in map order; each map's verdicts in fault id order. */
     public static List<JudgedMap> run(long first, int maps, Set<Fault> faults, int threads, IntConsumer progress) {
+        return run(first, maps, faults, threads, BuiltinCar.FACTORY, progress);
+    }
+
+    /** As {@link #run(long, int, Set, int, IntConsumer)}, every run of the controller {@code car} makes. */
+    public static List<JudgedMap> run(long first, int maps, Set<Fault> faults, int threads, ControllerFactory car,
+                                      IntConsumer progress) {
         List<Fault> ordered = new ArrayList<>(faults.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(faults));
         List<Callable<JudgedMap>> tasks = new ArrayList<>(maps);
         for (int i = 0; i < maps; i++) {
             long seed = first + i;
             // every column of calibration is a verdict, which a faulty run has settled when it stops
-            tasks.add(() -> MapRunner.judge(MapGenerator.generate(seed), seed, ordered, FaultyRuns.UNTIL_VERDICT));
+            tasks.add(() -> MapRunner.judge(MapGenerator.generate(seed), seed, ordered, FaultyRuns.UNTIL_VERDICT, car));
         }
         return InOrder.run(tasks, threads, progress, "fault calibration");
     }

@@ -29,6 +29,7 @@ public final class LiveRun {
     private final Scene scene;
     private final AccidentDetector detector;
     private final NearMisses nearMisses;
+    private final boolean copyable;
     private boolean ended;
 
     /** A run of the builtin car with {@code faults} switched on. */
@@ -52,6 +53,7 @@ public final class LiveRun {
         this.detector = new AccidentDetector(scene.telemetry());
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
         this.nearMisses = new NearMisses(scene.telemetry());
+        this.copyable = controller.copyable();
     }
 
     /**
@@ -63,7 +65,15 @@ public final class LiveRun {
      * @throws IllegalStateException if the run's controller cannot be copied
      */
     public LiveRun copy() {
+        if (!copyable) {
+            throw new IllegalStateException("a run of this controller cannot be copied: its state is not the run's");
+        }
         return ModelCopy.of(this, type -> type.getPackageName().equals("sitcov.world"));
+    }
+
+    /** Whether {@link #copy} can copy this run (its controller keeps all its state in the run). */
+    public boolean copyable() {
+        return copyable;
     }
 
     /**

@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.Locale;
 import sitcov.geom.Bearing;
 import sitcov.judge.LiveRun;
+import sitcov.judge.RunHistory;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.NearMiss;
@@ -48,20 +49,26 @@ public final class RunPainter {
     private static final double CAMERA_RANGE = 10;
     private static final double LIDAR_RANGE = 25;
 
-    private final LiveRun run;
+    private final RunHistory history;
     private final String title;
     private final int scale;
     private final BufferedImage base;
 
     public RunPainter(LiveRun run, String title, int pixelsPerMetre) {
-        this.run = run;
+        this.history = new RunHistory(run);
         this.title = title;
         this.scale = pixelsPerMetre;
         this.base = new MapRenderer(pixelsPerMetre).renderWithoutTraffic(run.map());
     }
 
+    /** The run as it stands now. */
     public LiveRun run() {
-        return run;
+        return history.current();
+    }
+
+    /** The run, stepped on and back. */
+    public RunHistory history() {
+        return history;
     }
 
     public int pixelsPerMetre() {
@@ -91,16 +98,16 @@ public final class RunPainter {
         AffineTransform saved = g.getTransform();
         g.translate(0, HEADER);
         g.scale(scale, scale);
-        Vehicle car = run.telemetry().car();
-        sensors(g, car, run.scene().autonomousCar().controller());
-        for (Vehicle v : run.telemetry().movingCars()) {
+        Vehicle car = run().telemetry().car();
+        sensors(g, car, run().scene().autonomousCar().controller());
+        for (Vehicle v : run().telemetry().movingCars()) {
             if (v.isActive()) {
                 body(g, v, MOVING);
             }
         }
         body(g, car, CAR);
         g.setTransform(saved);
-        accidents(g, run.detector().accidents());
+        accidents(g, run().detector().accidents());
         g.setClip(clip);
     }
 
@@ -108,8 +115,8 @@ public final class RunPainter {
         g.setColor(Color.BLACK);
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 14));
         g.drawString(title, 8, 18);
-        boolean ended = run.detector().outcome() != null;
-        List<Accident> accidents = run.detector().accidents();
+        boolean ended = run().detector().outcome() != null;
+        List<Accident> accidents = run().detector().accidents();
         g.setColor(!ended ? Color.BLACK : accidents.isEmpty() ? REACHED : ACCIDENT);
         fitted(g, status(), ended ? Font.BOLD : Font.PLAIN, 36);
         g.setColor(accidents.isEmpty() ? Color.DARK_GRAY : ACCIDENT);
@@ -126,10 +133,10 @@ public final class RunPainter {
      * accidents, never counted as one.
      */
     String nearMisses() {
-        if (run.tick() < 0) {
+        if (run().tick() < 0) {
             return "closest so far: nothing yet";
         }
-        NearMisses watched = run.nearMisses();
+        NearMisses watched = run().nearMisses();
         StringBuilder s = new StringBuilder("closest so far: ");
         for (NearMiss m : NearMiss.values()) {
             s.append(m.ordinal() == 0 ? "" : " · ").append(NearMissText.shortName(m)).append(' ')
@@ -161,14 +168,14 @@ public final class RunPainter {
 
     /** The header's second line: the car's state while the run goes on, how it ended once it has. */
     String status() {
-        if (run.detector().outcome() != null) {
-            return "Run over: " + OutcomeText.of(run.detector().outcome(), run.detector().ticks(), run.detector().accidents());
+        if (run().detector().outcome() != null) {
+            return "Run over: " + OutcomeText.of(run().detector().outcome(), run().detector().ticks(), run().detector().accidents());
         }
-        Vehicle car = run.telemetry().car();
-        SelfReport said = run.telemetry().selfReport();
+        Vehicle car = run().telemetry().car();
+        SelfReport said = run().telemetry().selfReport();
         String stage = said.stage() == null ? OvertakingStage.NOT_OVERTAKING.name() : said.stage();
         return String.format(Locale.ROOT, "%s · %.1f km/h · lane %s · %s%s%s · steered by %s · speed set by %s",
-                run.tick() < 0 ? "not started (press Play or Step)" : "tick " + run.tick(), car.speed() * 18,
+                run().tick() < 0 ? "not started (press Play or Step)" : "tick " + run().tick(), car.speed() * 18,
                 said.lane() == null ? Compass.nearest(car.heading()) : said.lane(),
                 stage.toLowerCase(Locale.ROOT).replace('_', ' '),
                 said.crossingJunction() ? " · crossing a junction" : "", said.waitingAtJunction() ? " · waiting" : "",

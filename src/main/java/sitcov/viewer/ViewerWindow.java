@@ -22,8 +22,8 @@ import javax.swing.Timer;
 
 /**
  * The live viewer (the paper's Fig. 1, MASON's console in spirit): one pane per run — the run and,
- * with a fault, its fault-free twin beside it — stepped together; play, pause, step, speed and
- * restart. It owns the runs and steps them; the model never calls it.
+ * with a fault, its fault-free twin beside it — stepped together; play, pause, step, step back
+ * (from checkpoints the runs keep), speed and restart. It owns the runs and steps them; the model never calls it.
  */
 public final class ViewerWindow {
     /** Frames a second while playing; the slider sets how many ticks each frame advances. */
@@ -82,9 +82,12 @@ public final class ViewerWindow {
         play.addActionListener(e -> toggle());
         JButton step = new JButton("Step");
         step.addActionListener(e -> advance(1));
+        JButton back = new JButton("Back");
+        back.addActionListener(e -> back());
         JButton restart = new JButton("Restart");
         restart.addActionListener(e -> restart());
         controls.add(play);
+        controls.add(back);
         controls.add(step);
         controls.add(restart);
         controls.add(new JLabel("ticks a frame"));
@@ -115,7 +118,7 @@ public final class ViewerWindow {
         boolean any = false;
         for (RunPainter p : painters) {
             for (int i = 0; i < ticks; i++) {
-                if (!p.run().step()) {
+                if (!p.history().step()) {
                     break;
                 }
                 any = true;
@@ -125,6 +128,17 @@ public final class ViewerWindow {
         if (!any && timer.isRunning()) {
             toggle();
         }
+    }
+
+    /** Steps every run back a tick, where its controller can be copied (the builtin car's can). */
+    void back() {
+        if (timer.isRunning()) {
+            toggle();
+        }
+        for (RunPainter p : painters) {
+            p.history().stepBack();
+        }
+        panes.repaint();
     }
 
     void restart() {

@@ -34,45 +34,85 @@ public final class ModelCopy {
         }
     };
 
-    private final Predicate<Class<?>> immutable;
-    private final IdentityHashMap<Object, Object> copies = new IdentityHashMap<>();
+    private final Sharing sharing;
+    // a run's graph holds some hundreds of objects: room for them from the start
+    private final IdentityHashMap<Object, Object> copies = new IdentityHashMap<>(1024);
 
-    private ModelCopy(Predicate<Class<?>> immutable) {
-        this.immutable = immutable;
+    private ModelCopy(Sharing sharing) {
+        this.sharing = sharing;
     }
 
     /**
-     * A copy of everything reachable from {@code root}, sharing only values and instances of the
-     * classes {@code immutable} accepts.
+     * Which classes copies share rather than copy: values (enums, strings, boxed numbers, records)
+     * and the classes {@code immutable} accepts. Make one and keep it: it remembers each class's answer.
+     */
+    public static final class Sharing {
+        private final Predicate<Class<?>> immutable;
+        private final ClassValue<Kind> kinds = new ClassValue<>() {
+            @Override
+            protected Kind computeValue(Class<?> type) {
+                return Kind.of(type, immutable);
+            }
+        };
+
+        public Sharing(Predicate<Class<?>> immutable) {
+            this.immutable = immutable;
+        }
+    }
+
+    /** What a copy does with an instance of a class. */
+    private enum Kind {
+        SHARED, ARRAY, JDK, MODEL;
+
+        static Kind of(Class<?> type, Predicate<Class<?>> immutable) {
+            if (isValue(type) || immutable.test(type)) {
+                return SHARED;
+            }
+            if (type.isArray()) {
+                return ARRAY;
+            }
+            if (type.getName().startsWith("java.")) {
+                return JDK;
+            }
+            if (type.isHidden() || type.isSynthetic()) {
+                if (PLANS.get(type).fields.length == 0) {
+                    return SHARED; // a lambda that captured nothing is a pure function
+                }
+                throw new IllegalStateException("cannot checkpoint " + type.getName()
+                        + ": a lambda that captured state; keep that state in a named class instead");
+            }
+            return MODEL;
+        }
+    }
+
+    /**
+     * A copy of everything reachable from {@code root}, sharing only what {@code sharing} shares.
      *
      * @throws IllegalStateException naming the object on the path that cannot be copied
      */
     @SuppressWarnings("unchecked")
-    public static <T> T of(T root, Predicate<Class<?>> immutable) {
-        return (T) new ModelCopy(immutable).copy(root);
+    public static <T> T of(T root, Sharing sharing) {
+        return (T) new ModelCopy(sharing).copy(root);
     }
 
     private Object copy(Object original) {
-        if (original == null || isValue(original.getClass())) {
+        if (original == null) {
+            return null;
+        }
+        Class<?> type = original.getClass();
+        Kind kind = sharing.kinds.get(type);
+        if (kind == Kind.SHARED) {
             return original;
         }
         Object done = copies.get(original);
         if (done != null) {
             return done;
         }
-        Class<?> type = original.getClass();
-        if (type.isArray()) {
+        if (kind == Kind.ARRAY) {
             return copyArray(original, type);
         }
-        if (type.getName().startsWith("java.")) {
+        if (kind == Kind.JDK) {
             return copyJdk(original, type);
-        }
-        if (type.isHidden() || type.isSynthetic()) {
-            if (PLANS.get(type).fields.length == 0) {
-                return original; // a lambda that captured nothing is a pure function
-            }
-            throw new IllegalStateException("cannot checkpoint " + type.getName()
-                    + ": a lambda that captured state; keep that state in a named class instead");
         }
         Object copy = Plan.allocate(type);
         copies.put(original, copy);
@@ -110,12 +150,15 @@ public final class ModelCopy {
         }
     }
 
-    private boolean isValue(Class<?> type) {
+    private static boolean isValue(Class<?> type) {
         return type.isPrimitive() || type.isEnum() || type.isRecord() || type == String.class || type == Class.class
                 || Number.class.isAssignableFrom(type) && type.getName().startsWith("java.lang.")
                 || type == Boolean.class || type == Character.class
-                || type.getSuperclass() != null && type.getSuperclass().isEnum() // an enum constant with a body
-                || immutable.test(type);
+                || type.getSuperclass() != null && type.getSuperclass().isEnum(); // an enum constant with a body
+    }
+
+    private boolean isShared(Object element) {
+        return element == null || sharing.kinds.get(element.getClass()) == Kind.SHARED;
     }
 
     private Object copyArray(Object original, Class<?> type) {
@@ -168,7 +211,7 @@ public final class ModelCopy {
             Collection<?> from = original instanceof Map<?, ?> m ? m.values() : (Collection<?>) original;
             boolean values = true;
             for (Object element : from) {
-                values &= element == null || isValue(element.getClass());
+                values &= isShared(element);
             }
             if (values) {
                 return original; // nothing in it can change

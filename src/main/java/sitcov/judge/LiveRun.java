@@ -21,6 +21,9 @@ import sitcov.world.WorldMap;
  * a tick per frame. The map, the internal seed and the faults fix it bit for bit.
  */
 public final class LiveRun {
+    /** What a copy shares with its run: the map, and everything of it, never changes. */
+    private static final ModelCopy.Sharing SHARED = new ModelCopy.Sharing(type -> type.getPackageName().equals("sitcov.world"));
+
     private final WorldMap map;
     private final long internalSeed;
     private Set<Fault> faults;
@@ -68,7 +71,7 @@ public final class LiveRun {
         if (!copyable) {
             throw new IllegalStateException("a run of this controller cannot be copied: its state is not the run's");
         }
-        return ModelCopy.of(this, type -> type.getPackageName().equals("sitcov.world"));
+        return ModelCopy.of(this, SHARED);
     }
 
     /** Whether {@link #copy} can copy this run (its controller keeps all its state in the run). */

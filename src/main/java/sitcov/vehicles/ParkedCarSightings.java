@@ -45,10 +45,11 @@ final class ParkedCarSightings {
         if (faults.isActive(Fault.OBSTACLE_SEARCH_ALONG_HEADING)) {
             return faulty;
         }
-        // watched from the shadows: the lidar is left as the fault-free car leaves it, whose sweep
-        // another heading than the lane's already departs from
+        // watched from the shadows: the lidar is left as the fault-free car leaves it. Only what it
+        // read departs: nothing but this reading (and a viewer's drawing) uses the car's last sweep,
+        // and the lidar's memory of a sweep gives what a fresh sweep would
         Sighting correct = alongLane(lidar, lane, laneCentre);
-        if (Double.compare(car.heading(), lane.bearing()) != 0 || !faulty.equals(correct)) {
+        if (!faulty.equals(correct)) {
             faults.departs(Fault.OBSTACLE_SEARCH_ALONG_HEADING);
         }
         return correct;

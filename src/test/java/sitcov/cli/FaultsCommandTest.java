@@ -57,4 +57,22 @@ class FaultsCommandTest {
         assertEquals(2, r.exitCode());
         assertTrue(r.err().contains("goes with --calibrate"), r.err());
     }
+
+    @Test
+    void calibrationForkedAndRunWholeAgreesByteForByte() {
+        CliRunner forked = CliRunner.run("faults", "--calibrate", "--maps", "4", "--faults", "ALL", "--threads", "1");
+        CliRunner whole = CliRunner.run("faults", "--calibrate", "--maps", "4", "--faults", "ALL", "--threads", "1",
+                "--fork", "off");
+        assertEquals(0, whole.exitCode(), whole.err());
+        assertTrue(forked.out().contains("FOUND"), forked.out());
+        assertEquals(whole.out(), forked.out());
+    }
+
+    @Test
+    void aForkSettingOtherThanOnOrOffIsRefusedWithExitCode2() {
+        CliRunner r = CliRunner.run("faults", "--calibrate", "--maps", "2", "--fork", "maybe");
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().contains("--fork takes on or off, not 'maybe'"), r.err());
+        assertEquals("", r.out());
+    }
 }

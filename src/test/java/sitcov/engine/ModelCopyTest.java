@@ -1,0 +1,102 @@
+package sitcov.engine;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.function.LongSupplier;
+import org.junit.jupiter.api.Test;
+
+class ModelCopyTest {
+    private static final ModelCopy.Sharing NOTHING_MORE = new ModelCopy.Sharing(type -> false);
+
+    /** A mutable model object: a counter, a buffer, friends (one of them possibly itself). */
+    static final class Node {
+        private final String name;
+        private final double[] buffer = new double[3];
+        private final List<Node> friends = new ArrayList<>();
+        private int count;
+        private Node self;
+
+        Node(String name) {
+            this.name = name;
+            this.self = this;
+        }
+    }
+
+    static final class Holder {
+        private final Object held;
+
+        Holder(Object held) {
+            this.held = held;
+        }
+    }
+
+    @Test
+    void aCopyHasTheOriginalsShapeAndSharesNothingThatCanChange() {
+        Node a = new Node("a");
+        Node b = new Node("b");
+        a.friends.add(b);
+        a.friends.add(b);
+        b.friends.add(a);
+        a.count = 7;
+        a.buffer[1] = 2.5;
+
+        Node copy = ModelCopy.of(a, NOTHING_MORE);
+        assertNotSame(a, copy);
+        assertSame(a.name, copy.name, "a string is a value");
+        assertSame(copy, copy.self, "a reference to itself stays one");
+        assertSame(copy.friends.get(0), copy.friends.get(1), "an object reached twice is copied once");
+        assertSame(copy, copy.friends.get(0).friends.get(0), "a cycle closes on the copy");
+        assertEquals(7, copy.count);
+        assertEquals(2.5, copy.buffer[1]);
+
+        copy.count = 9;
+        copy.buffer[1] = 4;
+        copy.friends.get(0).count = 5;
+        assertEquals(7, a.count);
+        assertEquals(2.5, a.buffer[1]);
+        assertEquals(0, b.count, "changing the copy leaves the original as it was");
+    }
+
+    @Test
+    void whatTheCallerNamesImmutableIsShared() {
+        Node shared = new Node("map");
+        Holder h = new Holder(shared);
+        Holder copy = ModelCopy.of(h, new ModelCopy.Sharing(type -> type == Node.class));
+        assertNotSame(h, copy);
+        assertSame(shared, copy.held);
+    }
+
+    @Test
+    void aLambdaThatCapturedStateIsRefusedNamingTheFieldThatHoldsIt() {
+        Node n = new Node("n");
+        LongSupplier captured = () -> n.count;
+        IllegalStateException e = assertThrows(IllegalStateException.class,
+                () -> ModelCopy.of(new Holder(captured), NOTHING_MORE));
+        assertTrue(e.getMessage().contains("a lambda that captured state") && e.getMessage().contains("Holder.held"),
+                e.getMessage());
+    }
+
+    @Test
+    void aReadOnlyViewIsRefusedBecauseTheListItViewsCannotBeFound() {
+        List<Node> nodes = new ArrayList<>(List.of(new Node("x")));
+        IllegalStateException e = assertThrows(IllegalStateException.class,
+                () -> ModelCopy.of(new Holder(Collections.unmodifiableList(nodes)), NOTHING_MORE));
+        assertTrue(e.getMessage().contains("Unmodifiable"), e.getMessage());
+    }
+
+    @Test
+    void aRandomStreamCopiedDrawsOnAsTheOriginalDoes() {
+        RandomStreams streams = new RandomStreams(11);
+        streams.stream("a").nextLong();
+        RandomStreams copy = ModelCopy.of(streams, NOTHING_MORE);
+        assertEquals(streams.stream("a").nextLong(), copy.stream("a").nextLong());
+        assertEquals(streams.stream("b").nextDouble(), copy.stream("b").nextDouble());
+    }
+}

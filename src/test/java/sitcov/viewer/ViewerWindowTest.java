@@ -42,4 +42,26 @@ class ViewerWindowTest {
         RunPainter painter = new RunPainter(new LiveRun(MapGenerator.generate(1), 1, Set.of()), "test", 3);
         assertEquals(RunPainter.paneSize(3), painter.size());
     }
+
+    @Test
+    void backStepsEveryPaneATickBackToTheRunAsItWasThen() {
+        java.util.function.Supplier<List<RunPainter>> runs = () -> List.of(
+                new RunPainter(new LiveRun(MapGenerator.generate(1), 1, Set.of()), "fault-free", 1),
+                new RunPainter(new LiveRun(MapGenerator.generate(1), 1, Set.of(sitcov.faults.Fault.CRAWL_DOUBLE_BRAKING)),
+                        "fault 6", 1));
+        ViewerWindow window = new ViewerWindow(runs);
+        window.advance(60);
+        window.back();
+        window.back();
+        ViewerWindow twin = new ViewerWindow(runs);
+        twin.advance(58);
+        for (int pane = 0; pane < 2; pane++) {
+            LiveRun back = window.painters().get(pane).run();
+            LiveRun then = twin.painters().get(pane).run();
+            assertEquals(57, back.tick());
+            assertEquals(then.record(), back.record());
+            assertEquals(then.telemetry().car().x(), back.telemetry().car().x());
+            assertEquals(then.telemetry().car().heading(), back.telemetry().car().heading());
+        }
+    }
 }

@@ -18,6 +18,7 @@ import sitcov.judge.Simulator;
 import sitcov.oracle.RunResult;
 import sitcov.protocol.ControllerStartException;
 import sitcov.protocol.ExecControllers;
+import sitcov.vehicles.BuiltinCar;
 import sitcov.world.Layout;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
@@ -36,6 +37,8 @@ final class BenchCommand implements Command {
     static final int DEFAULT_MAPS = 200;
     static final int DEFAULT_CANDIDATES = 20_000;
     static final int DEFAULT_JUDGED = 40;
+    /** Alternated rounds of judging forked and whole; the medians are shown. */
+    private static final int FORK_ROUNDS = 3;
     static final int MAX_JUDGED = 10_000;
     private static final long WARM_UP_SEED = 1_000_000L;
     static final int DEFAULT_ROUNDS = 7;
@@ -155,6 +158,31 @@ final class BenchCommand implements Command {
         }
         double untilVerdict = judgeSeconds(judgedMaps, FaultyRuns.UNTIL_VERDICT) / judged;
         double toEnd = judgeSeconds(judgedMaps, FaultyRuns.TO_END) / judged;
+        err.println("bench: judging maps 1.." + judged + " with all twenty faults, forked and run whole ...");
+        List<Fault> all = List.of(Fault.values());
+        ControllerFactory whole = BuiltinCar.FACTORY.unforked();
+        // both warmed, then alternated round by round (the first of a pair runs on a colder cache)
+        judgeSeconds(judgedMaps.subList(0, Math.min(3, judged)), all, BuiltinCar.FACTORY);
+        judgeSeconds(judgedMaps.subList(0, Math.min(3, judged)), all, whole);
+        double[] forkedRounds = new double[FORK_ROUNDS];
+        double[] wholeRounds = new double[FORK_ROUNDS];
+        for (int r = 0; r < FORK_ROUNDS; r++) {
+            if (r % 2 == 0) {
+                forkedRounds[r] = judgeSeconds(judgedMaps, all, BuiltinCar.FACTORY) / judged;
+                wholeRounds[r] = judgeSeconds(judgedMaps, all, whole) / judged;
+            } else {
+                wholeRounds[r] = judgeSeconds(judgedMaps, all, whole) / judged;
+                forkedRounds[r] = judgeSeconds(judgedMaps, all, BuiltinCar.FACTORY) / judged;
+            }
+        }
+        double forkedSeconds = median(forkedRounds);
+        double wholeSeconds = median(wholeRounds);
+        long forkedTicks = 0;
+        long wholeTicks = 0;
+        for (WorldMap map : judgedMaps) {
+            forkedTicks += MapRunner.ticksStepped(map, map.seed(), all, FaultyRuns.UNTIL_VERDICT, BuiltinCar.FACTORY);
+            wholeTicks += MapRunner.ticksStepped(map, map.seed(), all, FaultyRuns.UNTIL_VERDICT, whole);
+        }
 
         double runSeconds = runNanos / 1e9;
         double layoutSeconds = layoutNanos / 1e9;
@@ -180,6 +208,14 @@ final class BenchCommand implements Command {
                 "fault-free run + 7 PAPER faulty runs (faulty_runs=until-verdict)");
         line(out, "seconds a judged map, to the end", String.format(Locale.ROOT, "%.4f", toEnd),
                 "the same, faulty runs driven to the Target or the timeout");
+        line(out, "seconds a judged map, ALL, forked", String.format(Locale.ROOT, "%.4f", forkedSeconds),
+                "fault-free run + all twenty faulty runs (until verdict), each from where its fault departs");
+        line(out, "seconds a judged map, ALL, whole", String.format(Locale.ROOT, "%.4f", wholeSeconds),
+                String.format(Locale.ROOT, "the same, every faulty run from tick 0 (--fork off): forked / whole %.3f",
+                        forkedSeconds / wholeSeconds));
+        line(out, "ticks a judged map, ALL, forked", String.format(Locale.ROOT, "%.0f", (double) forkedTicks / judged),
+                String.format(Locale.ROOT, "against %.0f run whole: %.3f of them", (double) wholeTicks / judged,
+                        (double) forkedTicks / wholeTicks));
         out.println();
         out.printf(Locale.ROOT, "Runs: maps 1..%d, internal seed = external seed, no faults, %d ticks in %.2f s."
                 + " Candidates: MapGenerator.layout of seeds 1..%d in %.3f s.%n", maps, ticks, runSeconds,
@@ -287,6 +323,20 @@ final class BenchCommand implements Command {
         long start = System.nanoTime();
         for (WorldMap map : maps) {
             sink += MapRunner.judge(map, map.seed(), paper, length).ticks();
+        }
+        return (System.nanoTime() - start) / 1e9;
+    }
+
+    private static double median(double[] values) {
+        double[] sorted = values.clone();
+        java.util.Arrays.sort(sorted);
+        return sorted[sorted.length / 2];
+    }
+
+    private static double judgeSeconds(List<WorldMap> maps, List<Fault> faults, ControllerFactory car) {
+        long start = System.nanoTime();
+        for (WorldMap map : maps) {
+            sink += MapRunner.judge(map, map.seed(), faults, FaultyRuns.UNTIL_VERDICT, car).ticks();
         }
         return (System.nanoTime() - start) / 1e9;
     }

@@ -24,10 +24,15 @@ final class ForkedRuns {
     private ForkedRuns() {
     }
 
-    static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length,
-                           ControllerFactory controller) {
+    /** A map judged, and the ticks judging it stepped: the watching run's, the feeder's and the forks'. */
+    record Judging(JudgedMap judged, long ticksStepped) {
+    }
+
+    static Judging judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length,
+                         ControllerFactory controller) {
         LiveRun watching = LiveRun.watching(map, internalSeed, EnumSet.copyOf(faults), controller);
         RunResult faultFree = Simulator.drive(watching, RunObserver.NONE, null).result();
+        long stepped = faultFree.ticks();
         FaultVerdict[] verdicts = new FaultVerdict[faults.size()];
         List<Integer> departing = new ArrayList<>();
         for (int i = 0; i < faults.size(); i++) {
@@ -48,10 +53,12 @@ final class ForkedRuns {
             }
             LiveRun faulty = feeder.forkWith(shadow.fault(), shadow.reachedBefore(departs));
             VerdictWatch watch = length == FaultyRuns.UNTIL_VERDICT ? new VerdictWatch(faultFree) : null;
-            verdicts[i] = DifferentialOracle.judge(faultFree, Simulator.drive(faulty, RunObserver.NONE, watch),
-                    shadow.fault());
+            RunRecord run = Simulator.drive(faulty, RunObserver.NONE, watch);
+            stepped += run.result().ticks() - departs;
+            verdicts[i] = DifferentialOracle.judge(faultFree, run, shadow.fault());
         }
-        return new JudgedMap(faultFree, List.of(verdicts));
+        stepped += feeder == null ? 0 : feeder.tick() + 1;
+        return new Judging(new JudgedMap(faultFree, List.of(verdicts)), stepped);
     }
 
     /** The record of a faulty run that never departed from the fault-free run: that run, and what the fault did in it. */

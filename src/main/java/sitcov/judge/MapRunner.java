@@ -32,8 +32,8 @@ public final class MapRunner {
     /** As {@link #judge(WorldMap, long, List, FaultyRuns)}, every run driven by the controller {@code controller} makes. */
     public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length,
                                   ControllerFactory controller) {
-        if (controller.copyable() && !faults.isEmpty() && Set.copyOf(faults).size() == faults.size()) {
-            return ForkedRuns.judge(map, internalSeed, faults, length, controller);
+        if (forks(faults, controller)) {
+            return ForkedRuns.judge(map, internalSeed, faults, length, controller).judged();
         }
         RunResult faultFree = Simulator.run(map, internalSeed, Set.of(), RunObserver.NONE, controller).result();
         List<FaultVerdict> verdicts = new ArrayList<>(faults.size());
@@ -44,5 +44,21 @@ public final class MapRunner {
             verdicts.add(DifferentialOracle.judge(faultFree, faulty, fault));
         }
         return new JudgedMap(faultFree, verdicts);
+    }
+
+    /**
+     * The ticks judging {@code map} as {@link #judge(WorldMap, long, List, FaultyRuns, ControllerFactory)}
+     * does steps: every run whole, or (forked) the fault-free run, the run that feeds the checkpoints
+     * and each fork from its departure on. What {@code bench} shows forking saves.
+     */
+    public static long ticksStepped(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length,
+                                    ControllerFactory controller) {
+        return forks(faults, controller)
+                ? ForkedRuns.judge(map, internalSeed, faults, length, controller).ticksStepped()
+                : judge(map, internalSeed, faults, length, controller).ticks();
+    }
+
+    private static boolean forks(List<Fault> faults, ControllerFactory controller) {
+        return controller.copyable() && !faults.isEmpty() && Set.copyOf(faults).size() == faults.size();
     }
 }

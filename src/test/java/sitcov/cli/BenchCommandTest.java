@@ -16,10 +16,14 @@ class BenchCommandTest {
         assertEquals(ExitCode.OK, result.exitCode(), result.err());
         for (String measure : new String[] {"simulated ticks per second", "microseconds per tick", "runs per second",
                 "candidate maps per second", "seconds for 20000 candidates", "seconds a judged map, until verdict",
-                "seconds a judged map, to the end"}) {
+                "seconds a judged map, to the end", "seconds a judged map, ALL, forked", "seconds a judged map, ALL, whole",
+                "ticks a judged map, ALL, forked"}) {
             assertTrue(figure(result.out(), measure) > 0, measure);
         }
         assertTrue(result.out().contains("<= 8 with 15 moving cars"), result.out());
+        // maps 1 and 2 judged with all twenty faults: some faults never depart, so forked steps fewer ticks
+        assertTrue(figure(result.out(), "ticks a judged map, ALL, forked")
+                < Double.parseDouble(result.out().replaceAll("(?s).*against (\\d+) run whole.*", "$1")), result.out());
         assertTrue(result.out().contains("Judged maps: 1..2, each run fault-free and once per PAPER fault"), result.out());
     }
 

@@ -37,7 +37,7 @@ final class VersionsCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "PRESET | --reference CONTROLLER --variants CONTROLLER[;CONTROLLER…]  [--maps N] [--seed S0] [--threads T] [--out DIR]";
+        return "PRESET | --reference CONTROLLER --variants CONTROLLER[;CONTROLLER…]  [--maps N] [--seed S0] [--threads T] [--fork on|off] [--out DIR]";
     }
 
     @Override
@@ -48,9 +48,10 @@ final class VersionsCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--reference", "--variants", "--maps", "--seed", "--threads",
-                "--out"), Set.of());
+                "--fork", "--out"), Set.of());
         VersionsPlan plan = plan(options);
         int threads = options.threads(err);
+        boolean fork = options.forks();
         Path folder = options.value("--out").map(Path::of)
                 .orElse(Path.of("target", "results", plan.name() + "-seed" + plan.firstSeed()));
         if (Files.exists(folder) && !isEmptyFolder(folder)) {
@@ -69,7 +70,7 @@ final class VersionsCommand implements Command {
             } catch (IOException e) {
                 throw new UsageException("versions: cannot create " + folder + ": " + IoReason.of(e, folder) + ".");
             }
-            List<List<VersionVerdict>> judged = judge(plan, sources, threads);
+            List<List<VersionVerdict>> judged = judge(plan, sources, threads, fork);
             String csv = VersionsReport.csv(plan, judged);
             String verdict = VersionsReport.verdict(plan, judged);
             OutputFile.writeString(folder.resolve("versions.csv"), csv);
@@ -85,7 +86,8 @@ final class VersionsCommand implements Command {
         }
     }
 
-    private static List<List<VersionVerdict>> judge(VersionsPlan plan, List<ControllerSource> sources, int threads) {
+    private static List<List<VersionVerdict>> judge(VersionsPlan plan, List<ControllerSource> sources, int threads,
+                                                    boolean fork) {
         ExecutorService pool = Executors.newFixedThreadPool(threads);
         try {
             List<Future<List<VersionVerdict>>> futures = new ArrayList<>();
@@ -96,7 +98,9 @@ final class VersionsCommand implements Command {
                     for (ControllerSource s : sources.subList(1, sources.size())) {
                         variants.add(s.forThisThread());
                     }
-                    return VersionJudge.judge(MapGenerator.generate(seed), seed, sources.get(0).forThisThread(), variants);
+                    ControllerFactory reference = sources.get(0).forThisThread();
+                    return VersionJudge.judge(MapGenerator.generate(seed), seed, fork ? reference : reference.unforked(),
+                            variants);
                 }));
             }
             List<List<VersionVerdict>> all = new ArrayList<>();

@@ -150,8 +150,8 @@ public final class FaultSwitchboard {
      * already run in the ticks before.
      */
     public void switchOn(Fault fault, boolean reachedBefore) {
-        if (!shadowed.isEmpty() || !active.isEmpty()) {
-            throw new IllegalStateException("only a fault-free run's board can have a fault switched on");
+        if (!shadowed.isEmpty()) {
+            throw new IllegalStateException("a board watching faults from the shadows cannot have one switched on");
         }
         active.add(fault);
         reached[fault.ordinal()] = reachedBefore;

@@ -1,5 +1,6 @@
 package sitcov.judge;
 
+import java.util.List;
 import java.util.Set;
 import sitcov.control.ControllerFactory;
 import sitcov.engine.ModelCopy;
@@ -103,6 +104,17 @@ public final class LiveRun {
         LiveRun fork = copy();
         fork.switchboard.switchOn(fault, reachedBefore);
         fork.faults = Set.of(fault);
+        return fork;
+    }
+
+    /** A copy of this fault-free run with every fault of {@code shadows} switched on from now, as {@link #forkWith}. */
+    LiveRun forkWith(List<Shadow> shadows) {
+        LiveRun fork = copy();
+        long now = tick() + 1;
+        for (Shadow s : shadows) {
+            fork.switchboard.switchOn(s.fault(), s.reachedBefore(now));
+        }
+        fork.faults = shadows.stream().map(Shadow::fault).collect(java.util.stream.Collectors.toUnmodifiableSet());
         return fork;
     }
 

@@ -101,8 +101,20 @@ public final class BuiltinCar implements Controller, Bodied {
      * with bugs, for comparing versions. What every fault does is recorded on the run's board.
      */
     public static ControllerFactory withPlanted(Set<Fault> planted) {
-        Set<Fault> copy = Set.copyOf(planted);
-        return run -> new BuiltinCar(run.map(), run.faults().alsoWith(copy), run.streams().stream(DECISIONS_STREAM));
+        return new Planted(Set.copyOf(planted));
+    }
+
+    /** The faults planted in {@code version}, if it is the builtin car with faults planted ({@link #withPlanted}). */
+    public static java.util.Optional<Set<Fault>> plantedIn(ControllerFactory version) {
+        return version instanceof Planted p ? java.util.Optional.of(p.faults()) : java.util.Optional.empty();
+    }
+
+    /** The builtin car with faults planted: a faulty run's car, kept apart from the run's own faults. */
+    private record Planted(Set<Fault> faults) implements ControllerFactory {
+        @Override
+        public Controller start(RunStart run) {
+            return new BuiltinCar(run.map(), run.faults().alsoWith(faults), run.streams().stream(DECISIONS_STREAM));
+        }
     }
 
     /** The builtin car for every worker thread (it holds no process or other resource). */

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.EnumSet;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.vehicles.BuiltinCar;
 import sitcov.world.MapGenerator;
@@ -56,5 +57,21 @@ class VersionJudgeTest {
         assertFalse(same.regressed());
         assertFalse(same.improved());
         assertEquals(same.reference(), same.run());
+    }
+
+    @Test
+    void versionsWithPlantedFaultsForkedFromTheReferenceAreJudgedAsWhenRunWhole() {
+        List<ControllerFactory> versions = List.of(BuiltinCar.withPlanted(EnumSet.of(Fault.ofId(19))),
+                BuiltinCar.withPlanted(EnumSet.of(Fault.ofId(17), Fault.ofId(5))),
+                BuiltinCar.withPlanted(EnumSet.of(Fault.ofId(12))), BuiltinCar.withPlanted(EnumSet.noneOf(Fault.class)));
+        int regressions = 0;
+        for (long seed = 1; seed <= 8; seed++) {
+            WorldMap map = MapGenerator.generate(seed);
+            List<VersionVerdict> forked = VersionJudge.judge(map, seed, BuiltinCar.FACTORY, versions);
+            List<VersionVerdict> whole = VersionJudge.judge(map, seed, BuiltinCar.FACTORY.unforked(), versions);
+            assertEquals(whole, forked, "map " + seed);
+            regressions += (int) forked.stream().filter(VersionVerdict::regressed).count();
+        }
+        assertTrue(regressions > 0, "some versions fail where the reference does not");
     }
 }

@@ -49,7 +49,10 @@ class FaultSwitchboardTest {
         assertTrue(board.isActive(Fault.CREEPS_WHILE_WAITING));
         board.effective(Fault.CREEPS_WHILE_WAITING);
         assertEquals(new Activation(Fault.CREEPS_WHILE_WAITING, true, true, 1, 50), board.activation(Fault.CREEPS_WHILE_WAITING));
-        assertThrows(IllegalStateException.class, () -> board.switchOn(Fault.SECOND_PULL_OUT, false),
-                "a board with a fault on is no fault-free run's");
+        board.switchOn(Fault.SECOND_PULL_OUT, false);
+        assertTrue(board.isActive(Fault.SECOND_PULL_OUT), "a version with several faults planted has them all on");
+        FaultSwitchboard watching = FaultSwitchboard.shadowing(Set.of(Fault.SECOND_PULL_OUT), () -> tick);
+        assertThrows(IllegalStateException.class, () -> watching.switchOn(Fault.SECOND_PULL_OUT, false),
+                "a run watching from the shadows is the fault-free run of record: nothing is switched on in it");
     }
 }

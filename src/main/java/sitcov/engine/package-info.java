@@ -1,6 +1,7 @@
 /**
  * The MASON-style simulation kernel: a {@link sitcov.engine.Schedule} of {@link sitcov.engine.Steppable}
  * agents keyed by tick and ordering, the {@link sitcov.engine.SimState} that owns it, and the
- * {@link sitcov.engine.RandomStreams} every random choice comes from. Depends on nothing else in sitcov.
+ * {@link sitcov.engine.RandomStreams} every random choice comes from (SplitMix64, {@link sitcov.engine.SplitMix}),
+ * and {@link sitcov.engine.ModelCopy}, the deep copy a checkpoint of a run is. Depends on nothing else in sitcov.
  */
 package sitcov.engine;

@@ -29,6 +29,7 @@ public final class FaultSwitchboard {
     private final EnumSet<Fault> shadowed;
     private final long[] shadowReached;
     private final long[] departed;
+    private boolean firstEffectsOnly;
 
     public FaultSwitchboard(Set<Fault> active, LongSupplier clock) {
         this(active, Set.of(), clock);
@@ -57,6 +58,20 @@ public final class FaultSwitchboard {
         this.shadowed = sharing.shadowed;
         this.shadowReached = sharing.shadowReached;
         this.departed = sharing.departed;
+    }
+
+    /**
+     * Tells the seams that only whether and when each fault first acted will be read (a judged run's
+     * verdict and row need no more): a seam whose record costs work of its own, the degraded camera's
+     * second look, may then skip it once its fault has acted. What the car does is the same.
+     */
+    public void recordFirstEffectsOnly() {
+        firstEffectsOnly = true;
+    }
+
+    /** Whether nothing more about {@code fault} needs recording: it acted, and only first effects are kept. */
+    public boolean recorded(Fault fault) {
+        return firstEffectsOnly && effectiveCount[fault.ordinal()] > 0;
     }
 
     /** A board for a fault-free run that watches {@code watched} from the shadows: none of them acts. */

@@ -51,7 +51,7 @@ final class ForkedRuns {
             while (feeder.tick() < departs - 1) {
                 feeder.step();
             }
-            LiveRun faulty = feeder.forkWith(shadow.fault(), shadow.reachedBefore(departs));
+            LiveRun faulty = feeder.forkWith(shadow.fault(), shadow.reachedBefore(departs)).judged();
             VerdictWatch watch = length == FaultyRuns.UNTIL_VERDICT ? new VerdictWatch(faultFree) : null;
             RunRecord run = Simulator.drive(faulty, RunObserver.NONE, watch);
             stepped += run.result().ticks() - departs;

@@ -75,6 +75,12 @@ public final class LiveRun {
         return ModelCopy.of(this, SHARED);
     }
 
+    /** Keeps of each fault only whether and when it first acted, as a judged faulty run needs ({@link FaultSwitchboard#recordFirstEffectsOnly}). */
+    LiveRun judged() {
+        switchboard.recordFirstEffectsOnly();
+        return this;
+    }
+
     /** Whether {@link #copy} can copy this run (its controller keeps all its state in the run). */
     public boolean copyable() {
         return copyable;

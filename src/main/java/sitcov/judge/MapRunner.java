@@ -40,7 +40,7 @@ public final class MapRunner {
         for (Fault fault : faults) {
             RunRecord faulty = length == FaultyRuns.UNTIL_VERDICT
                     ? Simulator.runUntilVerdict(map, internalSeed, EnumSet.of(fault), faultFree, controller)
-                    : Simulator.run(map, internalSeed, EnumSet.of(fault), RunObserver.NONE, controller);
+                    : Simulator.runJudged(map, internalSeed, EnumSet.of(fault), controller);
             verdicts.add(DifferentialOracle.judge(faultFree, faulty, fault));
         }
         return new JudgedMap(faultFree, verdicts);

@@ -33,7 +33,13 @@ public final class Simulator {
     /** A faulty run stopped once its verdict against {@code faultFree} (same map and seeds) is settled. */
     static RunRecord runUntilVerdict(WorldMap map, long internalSeed, Set<Fault> faults, RunResult faultFree,
                                      ControllerFactory controller) {
-        return run(map, internalSeed, faults, RunObserver.NONE, new VerdictWatch(faultFree), controller);
+        return drive(new LiveRun(map, internalSeed, faults, controller).judged(), RunObserver.NONE,
+                new VerdictWatch(faultFree));
+    }
+
+    /** A faulty run driven to its end, keeping of each fault only whether and when it first acted. */
+    static RunRecord runJudged(WorldMap map, long internalSeed, Set<Fault> faults, ControllerFactory controller) {
+        return drive(new LiveRun(map, internalSeed, faults, controller).judged(), RunObserver.NONE, null);
     }
 
     private static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer,

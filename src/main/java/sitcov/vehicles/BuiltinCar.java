@@ -169,7 +169,8 @@ public final class BuiltinCar implements Controller, Bodied {
         CameraSettings settings = CameraFaults.settings(faults);
         LaneEstimate seen = camera.look(body.x(), body.y(), lane, settings);
         camera.keepHits();
-        if (settings != CameraSettings.STANDARD) {
+        if (settings != CameraSettings.STANDARD && !CameraFaults.allRecorded(faults)) {
+            // the standard look only tells whether the degraded one saw otherwise: the car drives on the degraded one
             LaneEstimate correct = camera.look(body.x(), body.y(), lane, CameraSettings.STANDARD);
             CameraFaults.record(faults, !seen.equals(correct));
         } else {

@@ -90,6 +90,8 @@ public final class NearMisses {
     private final double[] squareX;
     private final double[] squareY;
     private final boolean[] carIn;
+    /** Per square, whether the car entered it this tick (scratch for {@link #watchSquares}). */
+    private final boolean[] carEnters;
     private final long[] carLeft;
     private final boolean[] otherIn;
     private final long[] otherLeft;
@@ -130,6 +132,7 @@ public final class NearMisses {
             squareY[j] = tees.get(j).centre().y();
         }
         carIn = new boolean[tees.size()];
+        carEnters = new boolean[tees.size()];
         carLeft = new long[tees.size()];
         Arrays.fill(carLeft, -1);
         otherIn = new boolean[moving * tees.size()];
@@ -254,33 +257,48 @@ public final class NearMisses {
     private void watchSquares(Telemetry run, double cx, double cy, double fx, double fy, double hl, double hw,
                               double reach, long tick) {
         int squares = squareX.length;
-        List<? extends Vehicle> moving = run.movingCars();
         for (int j = 0; j < squares; j++) {
             boolean carNow = inSquare(j, cx, cy, fx, fy, hl, hw, reach);
-            boolean carEnters = carNow && !carIn[j];
+            carEnters[j] = carNow && !carIn[j];
             if (!carNow && carIn[j]) {
                 carLeft[j] = tick;
             }
             carIn[j] = carNow;
-            for (int i = 0; i < moving.size(); i++) {
-                Vehicle other = moving.get(i);
+        }
+        // each vehicle's footprint is worked out once, not once per square: the same values, so the same answers
+        List<? extends Vehicle> moving = run.movingCars();
+        for (int i = 0; i < moving.size(); i++) {
+            Vehicle other = moving.get(i);
+            boolean active = other.isActive();
+            double ofx = 0;
+            double ofy = 0;
+            double ohl = 0;
+            double ohw = 0;
+            double ocx = 0;
+            double ocy = 0;
+            double oreach = 0;
+            if (active) {
+                ohl = other.length() / 2;
+                ohw = other.width() / 2;
+                ofx = other.headingDx();
+                ofy = other.headingDy();
+                ocx = other.x() - ohl * ofx;
+                ocy = other.y() - ohl * ofy;
+                oreach = Math.sqrt(ohl * ohl + ohw * ohw);
+            }
+            for (int j = 0; j < squares; j++) {
                 int at = i * squares + j;
-                boolean otherNow = false;
-                if (other.isActive()) {
-                    double ohl = other.length() / 2;
-                    double ohw = other.width() / 2;
-                    otherNow = inSquare(j, other.x() - ohl * other.headingDx(), other.y() - ohl * other.headingDy(),
-                            other.headingDx(), other.headingDy(), ohl, ohw, Math.sqrt(ohl * ohl + ohw * ohw));
-                }
+                boolean otherNow = active && inSquare(j, ocx, ocy, ofx, ofy, ohl, ohw, oreach);
                 boolean otherEnters = otherNow && !otherIn[at];
                 if (!otherNow && otherIn[at]) {
                     otherLeft[at] = tick;
                 }
                 otherIn[at] = otherNow;
-                if (carEnters && !otherNow && otherLeft[at] >= 0) {
+                // the order of these within a tick does not matter: keep takes the least, and the tick is the same
+                if (carEnters[j] && !otherNow && otherLeft[at] >= 0) {
                     keep(NearMiss.POST_ENCROACHMENT, tick - otherLeft[at], tick);
                 }
-                if (otherEnters && !carNow && carLeft[j] >= 0) {
+                if (otherEnters && !carIn[j] && carLeft[j] >= 0) {
                     keep(NearMiss.POST_ENCROACHMENT, tick - carLeft[j], tick);
                 }
             }

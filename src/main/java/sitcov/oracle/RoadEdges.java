@@ -25,7 +25,7 @@ final class RoadEdges {
     private final double[] y1;
     private final double[] x2;
     private final double[] y2;
-    /** Scratch: each piece's distance from the footprint's centre this tick. */
+    /** Scratch: each piece's squared distance from the footprint's centre this tick. */
     private final double[] centreDistance;
 
     RoadEdges(List<Rect> surfaces) {
@@ -113,17 +113,23 @@ final class RoadEdges {
         // the footprint is no farther from a piece than its centre is, and no nearer than that less its
         // reach: only pieces whose centre distance, less the reach, beats the nearest centre distance count
         double reach = Math.sqrt(hl * hl + hw * hw);
-        double bound = Double.POSITIVE_INFINITY;
+        // squares first: the root of the least square is the least root (the root is rounded exactly,
+        // and never falls), and a piece whose square is far beyond the cut below needs no root at all
+        double leastSquare = Double.POSITIVE_INFINITY;
         for (int k = 0; k < x1.length; k++) {
             double ox = Math.max(Math.max(x1[k] - cx, cx - x2[k]), 0);
             double oy = Math.max(Math.max(y1[k] - cy, cy - y2[k]), 0);
-            centreDistance[k] = Math.sqrt(ox * ox + oy * oy);
-            bound = Math.min(bound, centreDistance[k]);
+            centreDistance[k] = ox * ox + oy * oy;
+            leastSquare = Math.min(leastSquare, centreDistance[k]);
         }
+        double bound = Math.sqrt(leastSquare);
+        // beyond this square, root less reach exceeds bound by a millionth of the cut: far more than rounding
+        double surelyBeyond = (bound + reach) * (1 + 1e-6);
+        double surelyBeyondSquare = surelyBeyond * surelyBeyond;
         double nearest = Double.POSITIVE_INFINITY;
         double deepest = worstOff;
         for (int k = 0; k < x1.length; k++) {
-            if (centreDistance[k] - reach > bound) {
+            if (centreDistance[k] > surelyBeyondSquare || Math.sqrt(centreDistance[k]) - reach > bound) {
                 continue;
             }
             double d = BoxGap.segmentSignedDistance(x1[k], y1[k], x2[k], y2[k], cx, cy, fx, fy, hl, hw);

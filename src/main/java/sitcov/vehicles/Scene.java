@@ -38,6 +38,8 @@ public final class Scene {
     // read-only views made once: callers ask for them many times a tick
     private final List<MovingCar> movingCarsView = Collections.unmodifiableList(movingCars);
     private final List<Vehicle> vehiclesView = Collections.unmodifiableList(vehicles);
+    /** The same vehicles in a plain array, for the passes every car makes over the traffic each tick. */
+    private Vehicle[] vehicleArray = new Vehicle[0];
     private AutonomousCar autonomousCar;
     private final Telemetry telemetry = new SceneTelemetry(this);
 
@@ -136,11 +138,16 @@ public final class Scene {
         return vehiclesView;
     }
 
+    /** {@link #vehicles()} as an array, the autonomous car first: read it, never write it. */
+    Vehicle[] vehicleArray() {
+        return vehicleArray;
+    }
+
     /** Whether any active vehicle other than {@code self} has part of its footprint in the junction's square. */
     boolean isOccupiedByOther(Junction junction, Vehicle self) {
         double jx = junction.centre().x();
         double jy = junction.centre().y();
-        for (Vehicle v : vehicles) {
+        for (Vehicle v : vehicleArray) {
             // a vehicle whose front is further than its length plus the square's half-diagonal cannot reach in
             double reach = v.length() + 4.3;
             if (v != self && v.isActive() && Math.abs(v.x() - jx) < reach && Math.abs(v.y() - jy) < reach
@@ -154,10 +161,12 @@ public final class Scene {
     void setAutonomousCar(AutonomousCar car) {
         this.autonomousCar = car;
         vehicles.add(0, car);
+        vehicleArray = vehicles.toArray(new Vehicle[0]);
     }
 
     void addMovingCar(MovingCar car) {
         movingCars.add(car);
         vehicles.add(car);
+        vehicleArray = vehicles.toArray(new Vehicle[0]);
     }
 }

@@ -12,6 +12,7 @@ import sitcov.vehicles.Dynamics;
 import sitcov.vehicles.Telemetry;
 import sitcov.world.Junction;
 import sitcov.world.Road;
+import sitcov.world.RoadNetwork;
 
 /**
  * How close one run came to each accident: near-miss measures ({@link NearMiss}) and a robustness
@@ -70,6 +71,7 @@ public final class NearMisses {
     private double timeoutRho = Double.NaN;
 
     private final RoadEdges roadEdges;
+    private final RoadNetwork network;
     private final Road[] roads;
     private final Junction[] junctions;
     private final CentreLine centreLine;
@@ -100,6 +102,7 @@ public final class NearMisses {
         Arrays.fill(least, Double.POSITIVE_INFINITY);
         Arrays.fill(leastTick, -1);
         this.roadEdges = new RoadEdges(run.network().surfaces());
+        this.network = run.network();
         this.roads = run.network().roads().toArray(new Road[0]);
         this.junctions = run.network().junctions().toArray(new Junction[0]);
         this.centreLine = new CentreLine(run.network());
@@ -188,7 +191,8 @@ public final class NearMisses {
             if (inJunction(x, y)) {
                 continue;
             }
-            for (Road road : roads) {
+            for (int index : network.roadsNear(x, y)) {
+                Road road = roads[index];
                 if (road.contains(x, y)) {
                     // NORTH and EAST lanes are the first half, across < centre
                     boolean firstHalf = switch (CentreLine.laneOn(road, car.headingDx(), car.headingDy())) {

@@ -96,6 +96,9 @@ public final class NearMisses {
     private final boolean[] carEnters;
     private final long[] carLeft;
     private final boolean[] otherIn;
+    /** Per moving vehicle, how many squares it is in ({@code otherIn}'s trues in its row). */
+    private final int[] inCount;
+    private final SquareGrid squareGrid;
     private final long[] otherLeft;
 
     public NearMisses(Telemetry run) {
@@ -139,6 +142,8 @@ public final class NearMisses {
         carLeft = new long[tees.size()];
         Arrays.fill(carLeft, -1);
         otherIn = new boolean[moving * tees.size()];
+        inCount = new int[moving];
+        squareGrid = new SquareGrid(squareX, squareY);
         otherLeft = new long[moving * tees.size()];
         Arrays.fill(otherLeft, -1);
     }
@@ -261,9 +266,11 @@ public final class NearMisses {
     private void watchSquares(Telemetry run, double cx, double cy, double fx, double fy, double hl, double hw,
                               double reach, long tick) {
         int squares = squareX.length;
+        boolean anyCarEnters = false;
         for (int j = 0; j < squares; j++) {
             boolean carNow = inSquare(j, cx, cy, fx, fy, hl, hw, reach);
             carEnters[j] = carNow && !carIn[j];
+            anyCarEnters |= carEnters[j];
             if (!carNow && carIn[j]) {
                 carLeft[j] = tick;
             }
@@ -290,12 +297,24 @@ public final class NearMisses {
                 ocy = other.y() - ohl * ofy;
                 oreach = Math.sqrt(ohl * ohl + ohw * ohw);
             }
+            if (!anyCarEnters && inCount[i] == 0 && (!active || HALF_SQUARE + oreach < SquareGrid.REACH)) {
+                // the usual tick: the car entered no square and this vehicle is in none, so only a square it
+                // enters now changes anything, and only the squares near it can be entered
+                if (active) {
+                    enterNear(i, ocx, ocy, ofx, ofy, ohl, ohw, oreach, tick);
+                }
+                continue;
+            }
             for (int j = 0; j < squares; j++) {
                 int at = i * squares + j;
                 boolean otherNow = active && inSquare(j, ocx, ocy, ofx, ofy, ohl, ohw, oreach);
                 boolean otherEnters = otherNow && !otherIn[at];
                 if (!otherNow && otherIn[at]) {
                     otherLeft[at] = tick;
+                    inCount[i]--;
+                }
+                if (otherEnters) {
+                    inCount[i]++;
                 }
                 otherIn[at] = otherNow;
                 // the order of these within a tick does not matter: keep takes the least, and the tick is the same
@@ -303,6 +322,24 @@ public final class NearMisses {
                     keep(NearMiss.POST_ENCROACHMENT, tick - otherLeft[at], tick);
                 }
                 if (otherEnters && !carIn[j] && carLeft[j] >= 0) {
+                    keep(NearMiss.POST_ENCROACHMENT, tick - carLeft[j], tick);
+                }
+            }
+        }
+    }
+
+    /**
+     * What the loop over every square does for moving vehicle {@code i} when the car entered no square
+     * and the vehicle was in none: note each square it is in now as entered, beside the car or after it.
+     */
+    private void enterNear(int i, double ocx, double ocy, double ofx, double ofy, double ohl, double ohw, double oreach,
+                           long tick) {
+        int squares = squareX.length;
+        for (int j : squareGrid.near(ocx, ocy)) {
+            if (inSquare(j, ocx, ocy, ofx, ofy, ohl, ohw, oreach)) {
+                otherIn[i * squares + j] = true;
+                inCount[i]++;
+                if (!carIn[j] && carLeft[j] >= 0) {
                     keep(NearMiss.POST_ENCROACHMENT, tick - carLeft[j], tick);
                 }
             }

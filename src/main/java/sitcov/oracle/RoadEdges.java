@@ -25,6 +25,8 @@ final class RoadEdges {
     private final double[] y1;
     private final double[] x2;
     private final double[] y2;
+    /** The road that last held a point {@link #distanceToRoad} was asked about, or −1: tried first. */
+    private int lastHolding = -1;
     /** Scratch: each piece's squared distance from the footprint's centre this tick. */
     private final double[] centreDistance;
 
@@ -144,11 +146,21 @@ final class RoadEdges {
 
     /** The distance from a point to the nearest road rectangle: 0 on the road. */
     private double distanceToRoad(double x, double y) {
+        // a point a road holds is 0 from the road, as the scan below would find (its squares are never
+        // below 0); the road that held the last point asked about holds most points asked about next
+        int last = lastHolding;
+        if (last >= 0 && x >= minX[last] && x <= maxX[last] && y >= minY[last] && y <= maxY[last]) {
+            return 0;
+        }
         double best = Double.POSITIVE_INFINITY;
         for (int i = 0; i < minX.length; i++) {
             double dx = Math.max(Math.max(minX[i] - x, x - maxX[i]), 0);
             double dy = Math.max(Math.max(minY[i] - y, y - maxY[i]), 0);
-            best = Math.min(best, dx * dx + dy * dy);
+            double square = dx * dx + dy * dy;
+            if (square == 0 && best != 0) {
+                lastHolding = i;
+            }
+            best = Math.min(best, square);
         }
         return Math.sqrt(best);
     }

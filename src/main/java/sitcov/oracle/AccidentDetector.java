@@ -51,8 +51,11 @@ public final class AccidentDetector implements Steppable {
         long tick = state.tick();
         Box body = car.footprint();
         List<Box> parked = run.parkedBodies();
+        double reach = circumradius(body.length(), body.width());
         for (int i = 0; i < parked.size(); i++) {
-            boolean touching = body.overlaps(parked.get(i));
+            Box other = parked.get(i);
+            boolean touching = !apart(body.centreX(), body.centreY(), reach, other.centreX(), other.centreY(),
+                    circumradius(other.length(), other.width())) && body.overlaps(other);
             if (touching && !touchingParked[i]) {
                 record(tick, AccidentType.CLASHWITHOBSTACLE, car, i);
             }
@@ -73,7 +76,10 @@ public final class AccidentDetector implements Steppable {
         List<? extends Vehicle> moving = run.movingCars();
         for (int i = 0; i < moving.size(); i++) {
             Vehicle other = moving.get(i);
-            boolean touching = other.isActive() && body.overlaps(other.footprint());
+            boolean touching = other.isActive() && !apart(body.centreX(), body.centreY(), reach,
+                    other.x() - other.length() / 2 * other.headingDx(), other.y() - other.length() / 2 * other.headingDy(),
+                    circumradius(other.length(), other.width()))
+                    && body.overlaps(other.footprint());
             if (touching && !touchingMoving[i]) {
                 Blame blame = BlameRules.judge(car, other, centreLine, over);
                 if (blame.isAccident()) {
@@ -93,6 +99,22 @@ public final class AccidentDetector implements Steppable {
             record(tick, AccidentType.TIMEOUT, car, -1);
             finish(state, Outcome.TIMEOUT, tick);
         }
+    }
+
+    /**
+     * Whether two boxes, by their centres and the radii of the circles round them, are certainly
+     * apart: their circles are, by a margin far beyond rounding, so no overlap test would find them
+     * touching. Spares the footprint and the separating-axis test of everyone not near the car.
+     */
+    private static boolean apart(double ax, double ay, double aReach, double bx, double by, double bReach) {
+        double dx = bx - ax;
+        double dy = by - ay;
+        double beyond = aReach + bReach + 1e-6;
+        return dx * dx + dy * dy > beyond * beyond;
+    }
+
+    private static double circumradius(double length, double width) {
+        return Math.sqrt(length * length + width * width) / 2;
     }
 
     private void record(long tick, AccidentType type, Vehicle car, int other) {

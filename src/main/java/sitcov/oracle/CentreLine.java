@@ -43,7 +43,8 @@ final class CentreLine {
             if (inJunction(x, y)) {
                 continue;
             }
-            for (Road road : network.roads()) {
+            for (int index : network.roadsNear(x, y)) {
+                Road road = network.roads().get(index);
                 if (road.contains(x, y) && road.laneDirectionAt(x, y) == laneOn(road, headingDx, headingDy).opposite()
                         && Math.abs(road.across(x, y) - road.centre()) > 1e-9) {
                     return true;

@@ -12,6 +12,7 @@ import sitcov.vehicles.Dynamics;
 import sitcov.vehicles.Telemetry;
 import sitcov.world.Junction;
 import sitcov.world.Road;
+import sitcov.world.RoadNetwork;
 
 /**
  * How close one run came to each accident: near-miss measures ({@link NearMiss}) and a robustness
@@ -70,6 +71,7 @@ public final class NearMisses {
     private double timeoutRho = Double.NaN;
 
     private final RoadEdges roadEdges;
+    private final RoadNetwork network;
     private final Road[] roads;
     private final Junction[] junctions;
     private final CentreLine centreLine;
@@ -90,14 +92,20 @@ public final class NearMisses {
     private final double[] squareX;
     private final double[] squareY;
     private final boolean[] carIn;
+    /** Per square, whether the car entered it this tick (scratch for {@link #watchSquares}). */
+    private final boolean[] carEnters;
     private final long[] carLeft;
     private final boolean[] otherIn;
+    /** Per moving vehicle, how many squares it is in ({@code otherIn}'s trues in its row). */
+    private final int[] inCount;
+    private final SquareGrid squareGrid;
     private final long[] otherLeft;
 
     public NearMisses(Telemetry run) {
         Arrays.fill(least, Double.POSITIVE_INFINITY);
         Arrays.fill(leastTick, -1);
         this.roadEdges = new RoadEdges(run.network().surfaces());
+        this.network = run.network();
         this.roads = run.network().roads().toArray(new Road[0]);
         this.junctions = run.network().junctions().toArray(new Junction[0]);
         this.centreLine = new CentreLine(run.network());
@@ -130,9 +138,12 @@ public final class NearMisses {
             squareY[j] = tees.get(j).centre().y();
         }
         carIn = new boolean[tees.size()];
+        carEnters = new boolean[tees.size()];
         carLeft = new long[tees.size()];
         Arrays.fill(carLeft, -1);
         otherIn = new boolean[moving * tees.size()];
+        inCount = new int[moving];
+        squareGrid = new SquareGrid(squareX, squareY);
         otherLeft = new long[moving * tees.size()];
         Arrays.fill(otherLeft, -1);
     }
@@ -185,7 +196,8 @@ public final class NearMisses {
             if (inJunction(x, y)) {
                 continue;
             }
-            for (Road road : roads) {
+            for (int index : network.roadsNear(x, y)) {
+                Road road = roads[index];
                 if (road.contains(x, y)) {
                     // NORTH and EAST lanes are the first half, across < centre
                     boolean firstHalf = switch (CentreLine.laneOn(road, car.headingDx(), car.headingDy())) {
@@ -254,33 +266,80 @@ public final class NearMisses {
     private void watchSquares(Telemetry run, double cx, double cy, double fx, double fy, double hl, double hw,
                               double reach, long tick) {
         int squares = squareX.length;
-        List<? extends Vehicle> moving = run.movingCars();
+        boolean anyCarEnters = false;
         for (int j = 0; j < squares; j++) {
             boolean carNow = inSquare(j, cx, cy, fx, fy, hl, hw, reach);
-            boolean carEnters = carNow && !carIn[j];
+            carEnters[j] = carNow && !carIn[j];
+            anyCarEnters |= carEnters[j];
             if (!carNow && carIn[j]) {
                 carLeft[j] = tick;
             }
             carIn[j] = carNow;
-            for (int i = 0; i < moving.size(); i++) {
-                Vehicle other = moving.get(i);
-                int at = i * squares + j;
-                boolean otherNow = false;
-                if (other.isActive()) {
-                    double ohl = other.length() / 2;
-                    double ohw = other.width() / 2;
-                    otherNow = inSquare(j, other.x() - ohl * other.headingDx(), other.y() - ohl * other.headingDy(),
-                            other.headingDx(), other.headingDy(), ohl, ohw, Math.sqrt(ohl * ohl + ohw * ohw));
+        }
+        // each vehicle's footprint is worked out once, not once per square: the same values, so the same answers
+        List<? extends Vehicle> moving = run.movingCars();
+        for (int i = 0; i < moving.size(); i++) {
+            Vehicle other = moving.get(i);
+            boolean active = other.isActive();
+            double ofx = 0;
+            double ofy = 0;
+            double ohl = 0;
+            double ohw = 0;
+            double ocx = 0;
+            double ocy = 0;
+            double oreach = 0;
+            if (active) {
+                ohl = other.length() / 2;
+                ohw = other.width() / 2;
+                ofx = other.headingDx();
+                ofy = other.headingDy();
+                ocx = other.x() - ohl * ofx;
+                ocy = other.y() - ohl * ofy;
+                oreach = Math.sqrt(ohl * ohl + ohw * ohw);
+            }
+            if (!anyCarEnters && inCount[i] == 0 && (!active || HALF_SQUARE + oreach < SquareGrid.REACH)) {
+                // the usual tick: the car entered no square and this vehicle is in none, so only a square it
+                // enters now changes anything, and only the squares near it can be entered
+                if (active) {
+                    enterNear(i, ocx, ocy, ofx, ofy, ohl, ohw, oreach, tick);
                 }
+                continue;
+            }
+            for (int j = 0; j < squares; j++) {
+                int at = i * squares + j;
+                boolean otherNow = active && inSquare(j, ocx, ocy, ofx, ofy, ohl, ohw, oreach);
                 boolean otherEnters = otherNow && !otherIn[at];
                 if (!otherNow && otherIn[at]) {
                     otherLeft[at] = tick;
+                    inCount[i]--;
+                }
+                if (otherEnters) {
+                    inCount[i]++;
                 }
                 otherIn[at] = otherNow;
-                if (carEnters && !otherNow && otherLeft[at] >= 0) {
+                // the order of these within a tick does not matter: keep takes the least, and the tick is the same
+                if (carEnters[j] && !otherNow && otherLeft[at] >= 0) {
                     keep(NearMiss.POST_ENCROACHMENT, tick - otherLeft[at], tick);
                 }
-                if (otherEnters && !carNow && carLeft[j] >= 0) {
+                if (otherEnters && !carIn[j] && carLeft[j] >= 0) {
+                    keep(NearMiss.POST_ENCROACHMENT, tick - carLeft[j], tick);
+                }
+            }
+        }
+    }
+
+    /**
+     * What the loop over every square does for moving vehicle {@code i} when the car entered no square
+     * and the vehicle was in none: note each square it is in now as entered, beside the car or after it.
+     */
+    private void enterNear(int i, double ocx, double ocy, double ofx, double ofy, double ohl, double ohw, double oreach,
+                           long tick) {
+        int squares = squareX.length;
+        for (int j : squareGrid.near(ocx, ocy)) {
+            if (inSquare(j, ocx, ocy, ofx, ofy, ohl, ohw, oreach)) {
+                otherIn[i * squares + j] = true;
+                inCount[i]++;
+                if (!carIn[j] && carLeft[j] >= 0) {
                     keep(NearMiss.POST_ENCROACHMENT, tick - carLeft[j], tick);
                 }
             }

@@ -25,7 +25,9 @@ final class RoadEdges {
     private final double[] y1;
     private final double[] x2;
     private final double[] y2;
-    /** Scratch: each piece's distance from the footprint's centre this tick. */
+    /** The road that last held a point {@link #distanceToRoad} was asked about, or −1: tried first. */
+    private int lastHolding = -1;
+    /** Scratch: each piece's squared distance from the footprint's centre this tick. */
     private final double[] centreDistance;
 
     RoadEdges(List<Rect> surfaces) {
@@ -113,17 +115,23 @@ final class RoadEdges {
         // the footprint is no farther from a piece than its centre is, and no nearer than that less its
         // reach: only pieces whose centre distance, less the reach, beats the nearest centre distance count
         double reach = Math.sqrt(hl * hl + hw * hw);
-        double bound = Double.POSITIVE_INFINITY;
+        // squares first: the root of the least square is the least root (the root is rounded exactly,
+        // and never falls), and a piece whose square is far beyond the cut below needs no root at all
+        double leastSquare = Double.POSITIVE_INFINITY;
         for (int k = 0; k < x1.length; k++) {
             double ox = Math.max(Math.max(x1[k] - cx, cx - x2[k]), 0);
             double oy = Math.max(Math.max(y1[k] - cy, cy - y2[k]), 0);
-            centreDistance[k] = Math.sqrt(ox * ox + oy * oy);
-            bound = Math.min(bound, centreDistance[k]);
+            centreDistance[k] = ox * ox + oy * oy;
+            leastSquare = Math.min(leastSquare, centreDistance[k]);
         }
+        double bound = Math.sqrt(leastSquare);
+        // beyond this square, root less reach exceeds bound by a millionth of the cut: far more than rounding
+        double surelyBeyond = (bound + reach) * (1 + 1e-6);
+        double surelyBeyondSquare = surelyBeyond * surelyBeyond;
         double nearest = Double.POSITIVE_INFINITY;
         double deepest = worstOff;
         for (int k = 0; k < x1.length; k++) {
-            if (centreDistance[k] - reach > bound) {
+            if (centreDistance[k] > surelyBeyondSquare || Math.sqrt(centreDistance[k]) - reach > bound) {
                 continue;
             }
             double d = BoxGap.segmentSignedDistance(x1[k], y1[k], x2[k], y2[k], cx, cy, fx, fy, hl, hw);
@@ -138,11 +146,21 @@ final class RoadEdges {
 
     /** The distance from a point to the nearest road rectangle: 0 on the road. */
     private double distanceToRoad(double x, double y) {
+        // a point a road holds is 0 from the road, as the scan below would find (its squares are never
+        // below 0); the road that held the last point asked about holds most points asked about next
+        int last = lastHolding;
+        if (last >= 0 && x >= minX[last] && x <= maxX[last] && y >= minY[last] && y <= maxY[last]) {
+            return 0;
+        }
         double best = Double.POSITIVE_INFINITY;
         for (int i = 0; i < minX.length; i++) {
             double dx = Math.max(Math.max(minX[i] - x, x - maxX[i]), 0);
             double dy = Math.max(Math.max(minY[i] - y, y - maxY[i]), 0);
-            best = Math.min(best, dx * dx + dy * dy);
+            double square = dx * dx + dy * dy;
+            if (square == 0 && best != 0) {
+                lastHolding = i;
+            }
+            best = Math.min(best, square);
         }
         return Math.sqrt(best);
     }

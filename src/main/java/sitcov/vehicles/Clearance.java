@@ -59,7 +59,7 @@ final class Clearance {
     boolean wouldTouch(Scene scene, Vehicle self, Box next) {
         Box now = null;
         for (int k = 0; k < vehiclesNear; k++) {
-            Vehicle other = scene.vehicles().get(nearVehicles[k]);
+            Vehicle other = scene.vehicleArray()[nearVehicles[k]];
             Box theirs = other instanceof AutonomousCar car ? car.keptClear() : other.footprint();
             if (next.overlaps(theirs)) {
                 now = now == null ? self.footprint() : now;

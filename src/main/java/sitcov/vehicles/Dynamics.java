@@ -17,6 +17,7 @@ public final class Dynamics {
     /** Stopping distances of speeds 0, 1 mm, 2 mm … a tick, up to full speed: inverted by bisection. */
     private static final double SPEED_STEP = 0.001;
     private static final double[] STOPPING = tabulateStopping();
+    private static final SortedLookup STOPPING_LOOKUP = sortedOrFail(STOPPING);
 
     private static double[] tabulateStopping() {
         double[] table = new double[(int) Math.round(MAX_SPEED / SPEED_STEP) + 1];
@@ -24,6 +25,14 @@ public final class Dynamics {
             table[i] = stoppingDistance(i * SPEED_STEP);
         }
         return table;
+    }
+
+    private static SortedLookup sortedOrFail(double[] table) {
+        SortedLookup lookup = SortedLookup.of(table);
+        if (lookup == null) {
+            throw new IllegalStateException("stopping distances must grow with speed");
+        }
+        return lookup;
     }
 
     private Dynamics() {
@@ -73,10 +82,14 @@ public final class Dynamics {
         private double[] threshold = new double[64];
         private int[] fits = new int[64];
         private int[] tooFar = new int[64];
+        /** The thresholds in order, when they never fall, and the leaves' speeds in order; else null. */
+        private SortedLookup inOrder;
+        private double[] leaves;
 
         private SlowingBisection(double target) {
             this.target = target;
             grow(target, MAX_SPEED);
+            layOut();
         }
 
         static SlowingBisection of(double target) {
@@ -119,11 +132,40 @@ public final class Dynamics {
         }
 
         double speedFor(double distance) {
+            if (inOrder != null) {
+                return leaves[inOrder.countAtMost(distance)];
+            }
             int node = 0;
             while (fits[node] >= 0) {
                 node = threshold[node] <= distance ? fits[node] : tooFar[node];
             }
             return speed[node];
+        }
+
+        /**
+         * Lays the tree out in order — leaf, threshold, leaf, … — for {@link #speedFor}. When the
+         * thresholds never fall along that order (slowing distance grows with the starting speed), the
+         * walk turns right exactly at the thresholds not above the distance, and ends at the leaf after
+         * as many thresholds as that: a count a {@link SortedLookup} finds without the walk's chain of
+         * unpredictable branches. Otherwise the tree is kept walking.
+         */
+        private void layOut() {
+            double[] keys = new double[nodes / 2];
+            double[] inOrderLeaves = new double[nodes / 2 + 1];
+            int[] counts = new int[2];
+            inOrder(0, keys, inOrderLeaves, counts);
+            inOrder = SortedLookup.of(keys);
+            leaves = inOrderLeaves;
+        }
+
+        private void inOrder(int node, double[] keys, double[] inOrderLeaves, int[] counts) {
+            if (fits[node] < 0) {
+                inOrderLeaves[counts[1]++] = speed[node];
+                return;
+            }
+            inOrder(tooFar[node], keys, inOrderLeaves, counts);
+            keys[counts[0]++] = threshold[node];
+            inOrder(fits[node], keys, inOrderLeaves, counts);
         }
     }
 
@@ -143,17 +185,9 @@ public final class Dynamics {
         if (distance >= FULL_SPEED_STOPPING_DISTANCE) {
             return MAX_SPEED;
         }
-        // the stopping distance grows with speed: find the last tabulated speed that fits
-        int lo = 0;
-        int hi = STOPPING.length - 1;
-        while (lo < hi) {
-            int mid = (lo + hi + 1) >>> 1;
-            if (STOPPING[mid] <= distance) {
-                lo = mid;
-            } else {
-                hi = mid - 1;
-            }
-        }
-        return lo * SPEED_STEP;
+        // the stopping distance grows with speed: the last tabulated speed that fits (the table starts at
+        // 0, which fits; for NaN nothing does, and the search this replaced answered 0 too)
+        int fitting = STOPPING_LOOKUP.countAtMost(distance);
+        return fitting == 0 ? 0 : (fitting - 1) * SPEED_STEP;
     }
 }

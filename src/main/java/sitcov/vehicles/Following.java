@@ -23,13 +23,17 @@ final class Following {
         double least = Double.POSITIVE_INFINITY;
         // the one pass over the traffic a step makes: it also tells the clearance check who is near
         clearance.clearNear();
-        for (int each = 0, count = scene.vehicles().size(); each < count; each++) {
-            Vehicle other = scene.vehicles().get(each);
+        // nobody moves during the pass: the car's own place is read once
+        double sx = self.x();
+        double sy = self.y();
+        Vehicle[] all = scene.vehicleArray();
+        for (int each = 0; each < all.length; each++) {
+            Vehicle other = all[each];
             if (other == self || !other.isActive()) {
                 continue;
             }
-            double ox = other.x() - self.x();
-            double oy = other.y() - self.y();
+            double ox = other.x() - sx;
+            double oy = other.y() - sy;
             double distanceSq = ox * ox + oy * oy;
             clearance.vehicleAt(each, distanceSq);
             if (distanceSq > FOLLOW_RANGE_SQ || (impatient && other.speed() == 0 && other.id() != AutonomousCar.ID)) {
@@ -41,8 +45,8 @@ final class Following {
                 continue;
             }
             double halfL = other.length() / 2;
-            double cx = other.x() - halfL * other.headingDx() - self.x();
-            double cy = other.y() - halfL * other.headingDy() - self.y();
+            double cx = other.x() - halfL * other.headingDx() - sx;
+            double cy = other.y() - halfL * other.headingDy() - sy;
             double u = cx * fx + cy * fy;
             double v = cx * fy - cy * fx;
             double corridor = 1.3;

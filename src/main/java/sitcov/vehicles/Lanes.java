@@ -31,7 +31,9 @@ final class Lanes {
     /** A road holding the point whose axis runs along {@code direction}, or null. */
     static Road roadAlong(RoadNetwork network, double x, double y, Compass direction) {
         boolean northSouth = direction.isNorthSouth();
-        for (Road road : network.roads()) {
+        List<Road> roads = network.roads();
+        for (int index : network.roadsNear(x, y)) {
+            Road road = roads.get(index);
             if (road.isNorthSouth() == northSouth && road.contains(x, y)) {
                 return road;
             }

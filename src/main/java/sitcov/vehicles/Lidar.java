@@ -50,6 +50,9 @@ final class Lidar {
     private final double[] parkedBest = new double[RAYS];
     private final boolean[] parkedOnRoad = new boolean[RAYS];
     private final Snapshot parkedSwept = new Snapshot();
+    /** The span of rays the parked cars of {@link #parkedSwept} cover (empty: lowest above highest). */
+    private int parkedLowest = RAYS;
+    private int parkedHighest = -1;
 
     private final double[] best = new double[RAYS];
     private final boolean[] byVehicle = new boolean[RAYS];
@@ -124,8 +127,13 @@ final class Lidar {
         }
         System.arraycopy(parkedBest, 0, best, 0, RAYS);
         java.util.Arrays.fill(byVehicle, false);
+        // only the rays some object's span covers can have hit anything: the rest stay NaN and are skipped below
+        int lowest = parkedLowest;
+        int highest = parkedHighest;
         for (int k = parked; k < n; k++) {
             raysCovering(k, x, y, centreBearing);
+            lowest = Math.min(lowest, firstRay[k]);
+            highest = Math.max(highest, lastRay[k]);
             for (int ray = firstRay[k]; ray <= lastRay[k]; ray++) {
                 double d = sample(k, x, y, fan, ray);
                 if (!Double.isNaN(d) && (Double.isNaN(best[ray]) || d < best[ray])) {
@@ -136,7 +144,7 @@ final class Lidar {
         }
         Compass right = lane.right();
         Compass ahead = lane;
-        for (int ray = 0; ray < RAYS; ray++) {
+        for (int ray = lowest; ray <= highest; ray++) {
             if (Double.isNaN(best[ray])) {
                 continue;
             }
@@ -168,8 +176,12 @@ final class Lidar {
     /** Sweeps the first {@code parked} objects (the parked cars): the nearest sample per ray, the first car's on a tie. */
     private void sweepParked(double x, double y, double centreBearing, int parked, RayFan fan) {
         java.util.Arrays.fill(parkedBest, Double.NaN);
+        parkedLowest = RAYS;
+        parkedHighest = -1;
         for (int k = 0; k < parked; k++) {
             raysCovering(k, x, y, centreBearing);
+            parkedLowest = Math.min(parkedLowest, firstRay[k]);
+            parkedHighest = Math.max(parkedHighest, lastRay[k]);
             for (int ray = firstRay[k]; ray <= lastRay[k]; ray++) {
                 double d = sample(k, x, y, fan, ray);
                 if (!Double.isNaN(d) && (Double.isNaN(parkedBest[ray]) || d < parkedBest[ray])) {
@@ -177,7 +189,8 @@ final class Lidar {
                 }
             }
         }
-        for (int ray = 0; ray < RAYS; ray++) {
+        // outside the parked cars' spans parkedBest is NaN, and parkedOnRoad is never read
+        for (int ray = parkedLowest; ray <= parkedHighest; ray++) {
             parkedOnRoad[ray] = !Double.isNaN(parkedBest[ray])
                     && roadReach.reaches(x, y, fan.dx(ray), fan.dy(ray), parkedBest[ray]);
         }

@@ -34,6 +34,8 @@ final class MarkingCamera {
     private final double[] stripLo = new double[MAX_CANDIDATES];
     private final double[] stripHi = new double[MAX_CANDIDATES];
     private final double[] seen = new double[MAX_RAYS];
+    /** Per ray of the fan in hand, its first marking hit (NaN: none), found strip by strip. */
+    private final double[] nearest = new double[MAX_RAYS];
     /** The last look with each of the (at most two: faulty and standard) settings; the one in hand. */
     private final Look[] looks = new Look[2];
     private Look look;
@@ -93,8 +95,10 @@ final class MarkingCamera {
         int n = nearbyStrips(x, y, lane, limit, MarkingKind.EDGE);
         int hits = 0;
         RayFan fan = fans.fan(RayFan.Form.STEPPING_RIGHT, lane.bearing(), settings.leftArc(), 0, settings.angularStep());
+        boolean byStrip = nearestByStrip(x, y, fan, n, settings, limit);
         for (int ray = 0; ray < fan.size() && hits < MAX_RAYS; ray++) {
-            double v = lateralOfHit(x, y, fan, ray, right, n, settings, limit);
+            double v = byStrip ? reported(x, y, fan, ray, right, nearest[ray])
+                    : lateralOfHit(x, y, fan, ray, right, n, settings, limit);
             if (!Double.isNaN(v) && v < 0 && v > -FARTHEST_LINE) {
                 seen[hits++] = v;
             }
@@ -103,8 +107,10 @@ final class MarkingCamera {
         n = nearbyStrips(x, y, lane, limit, MarkingKind.CENTRE);
         hits = 0;
         fan = fans.fan(RayFan.Form.STEPPING_RIGHT, lane.bearing(), 0, -settings.rightArc(), settings.angularStep());
+        byStrip = nearestByStrip(x, y, fan, n, settings, limit);
         for (int ray = 0; ray < fan.size() && hits < MAX_RAYS; ray++) {
-            double v = lateralOfHit(x, y, fan, ray, right, n, settings, limit);
+            double v = byStrip ? reported(x, y, fan, ray, right, nearest[ray])
+                    : lateralOfHit(x, y, fan, ray, right, n, settings, limit);
             if (!Double.isNaN(v) && v > 0 && v < FARTHEST_LINE) {
                 seen[hits++] = v;
             }
@@ -171,6 +177,60 @@ final class MarkingCamera {
                 }
             }
         }
+        return reported(x, y, fan, ray, right, best);
+    }
+
+    /**
+     * Each ray's first marking hit, as {@link #lateralOfHit} finds it, into {@link #nearest}, strip by
+     * strip: a strip is tried only on the run of rays whose slopes its own span admits (the rays'
+     * slopes fall along the fan), and on the rays with no slope, so the same ray–strip pairs are
+     * tried as there, and each ray keeps the least hit — the same, in whatever order the strips come.
+     * Saves trying every strip's span on every ray. False, with nothing done, for a fan whose slopes
+     * do not fall, or one larger than the buffers: then {@link #lateralOfHit} is asked ray by ray.
+     */
+    private boolean nearestByStrip(double x, double y, RayFan fan, int nStrips, CameraSettings settings, double limit) {
+        if (!fan.slopesFall() || fan.size() > MAX_RAYS) {
+            return false;
+        }
+        java.util.Arrays.fill(nearest, 0, fan.size(), Double.NaN);
+        for (int s = 0; s < nStrips; s++) {
+            double lo = stripLo[s];
+            double hi = stripHi[s];
+            if (Double.isNaN(lo) || Double.isNaN(hi)) {
+                // a NaN bound admits every ray on that side: try them as lateralOfHit would
+                for (int ray = fan.slopedFrom(); ray < fan.slopedTo(); ray++) {
+                    if (!(fan.slope(ray) < lo) && !(fan.slope(ray) > hi)) {
+                        tryStrip(s, x, y, fan, ray, settings, limit);
+                    }
+                }
+            } else {
+                for (int ray = fan.firstSlopeAtMost(hi), last = fan.lastSlopeAtLeast(lo); ray <= last; ray++) {
+                    tryStrip(s, x, y, fan, ray, settings, limit);
+                }
+            }
+            for (int ray = 0; ray < fan.slopedFrom(); ray++) {
+                tryStrip(s, x, y, fan, ray, settings, limit);
+            }
+            for (int ray = fan.slopedTo(); ray < fan.size(); ray++) {
+                tryStrip(s, x, y, fan, ray, settings, limit);
+            }
+        }
+        return true;
+    }
+
+    private void tryStrip(int s, double x, double y, RayFan fan, int ray, CameraSettings settings, double limit) {
+        if (strips[s].rayInterval(x, y, fan.dx(ray), fan.dy(ray), interval)) {
+            double d = Rays.firstSample(interval[0], interval[1], settings.rangeStart(), settings.rangeStep(), limit);
+            if (!Double.isNaN(d) && (Double.isNaN(nearest[ray]) || d < nearest[ray])) {
+                nearest[ray] = d;
+            }
+        }
+    }
+
+    /** The lateral offset of a ray's first marking hit {@code best} metres out (NaN: none), once the road is known to reach it; noted as a hit. */
+    private double reported(double x, double y, RayFan fan, int ray, Compass right, double best) {
+        double dx = fan.dx(ray);
+        double dy = fan.dy(ray);
         // the ray stops where it leaves the road; only a ray that hit something needs to know where
         if (Double.isNaN(best) || !roadReach.reaches(x, y, dx, dy, best)) {
             return Double.NaN;

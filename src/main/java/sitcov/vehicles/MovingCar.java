@@ -9,6 +9,7 @@ import sitcov.engine.Steppable;
 import sitcov.geom.Bearing;
 import sitcov.geom.Box;
 import sitcov.geom.Compass;
+import sitcov.geom.Rect;
 import sitcov.geom.Vec2;
 import sitcov.world.Dimensions;
 import sitcov.world.Junction;
@@ -32,6 +33,8 @@ public final class MovingCar implements Bodied, Steppable {
     static final double U_TURN_SPEED = 0.3;
     static final double LOOKAHEAD = 5;
     static final double GAP = 2;
+    /** How deep inside a road's surface (metres) a front centre puts the footprint on the road beyond doubt. */
+    private static final double DEEP = 0.01;
     /** Vehicles further than this (squared, metres) cannot matter to keeping distance this tick. */
     /** Ticks standing still after which the driver stops waiting for other standing moving cars. */
     static final int IMPATIENCE = 40;
@@ -267,9 +270,22 @@ public final class MovingCar implements Bodied, Steppable {
     }
 
     private boolean hasLeftTheRoads() {
-        Box body = footprint();
-        for (var surface : scene.network().surfaces()) {
-            if (body.overlaps(surface)) {
+        // the usual case, told without building the footprint: a front centre at least DEEP inside a
+        // road's surface leaves a disc of radius DEEP / 2 of the footprint's interior on it, so the
+        // footprint overlaps that surface far beyond Box's tolerance and the test below would say so too
+        double x = body.x();
+        double y = body.y();
+        List<Rect> surfaces = scene.network().surfaces();
+        for (int each = 0, count = surfaces.size(); each < count; each++) {
+            Rect surface = surfaces.get(each);
+            if (x > surface.minX() + DEEP && x < surface.maxX() - DEEP && y > surface.minY() + DEEP
+                    && y < surface.maxY() - DEEP) {
+                return false;
+            }
+        }
+        Box footprint = footprint();
+        for (int each = 0, count = surfaces.size(); each < count; each++) {
+            if (footprint.overlaps(surfaces.get(each))) {
                 return false;
             }
         }

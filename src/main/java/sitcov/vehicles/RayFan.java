@@ -26,6 +26,9 @@ final class RayFan {
     private final double[] dx;
     private final double[] dy;
     private final double[] slope;
+    private final boolean sloped;
+    private final int slopedFrom;
+    private final int slopedTo;
 
     private RayFan(Form form, double bearing, double first, double last, double step) {
         this.form = form;
@@ -63,6 +66,70 @@ final class RayFan {
             double left = dx[k] * aheadY - dy[k] * ahead;
             slope[k] = along > 1e-6 ? left / along : Double.NaN;
         }
+        int from = 0;
+        while (from < count && Double.isNaN(slope[from])) {
+            from++;
+        }
+        int to = from;
+        while (to < count && !Double.isNaN(slope[to]) && (to == from || slope[to] < slope[to - 1])) {
+            to++;
+        }
+        int after = to;
+        while (after < count && Double.isNaN(slope[after])) {
+            after++;
+        }
+        sloped = after == count;
+        slopedFrom = from;
+        slopedTo = to;
+    }
+
+    /**
+     * Whether the rays with a slope are one run whose slopes strictly fall (rays square to the bearing
+     * or behind it only before and after it): then the rays whose slope lies in an interval are a run
+     * too, found by {@link #firstSlopeAtMost} and {@link #lastSlopeAtLeast}.
+     */
+    boolean slopesFall() {
+        return sloped;
+    }
+
+    /** The first ray of the sloped run. */
+    int slopedFrom() {
+        return slopedFrom;
+    }
+
+    /** One past the last ray of the sloped run. */
+    int slopedTo() {
+        return slopedTo;
+    }
+
+    /** The first ray of the sloped run whose slope is at most {@code value} (the run's end if none); only when {@link #slopesFall}. */
+    int firstSlopeAtMost(double value) {
+        int lo = slopedFrom;
+        int hi = slopedTo;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (slope[mid] <= value) {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        return lo;
+    }
+
+    /** The last ray of the sloped run whose slope is at least {@code value} (one before the run if none); only when {@link #slopesFall}. */
+    int lastSlopeAtLeast(double value) {
+        int lo = slopedFrom;
+        int hi = slopedTo;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (slope[mid] >= value) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo - 1;
     }
 
     int size() {

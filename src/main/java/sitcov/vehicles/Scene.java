@@ -35,6 +35,8 @@ public final class Scene {
     // unmodifiable, set once the scene is built: callers ask for them many times a tick
     private List<MovingCar> movingCars = List.of();
     private List<Vehicle> vehicles = List.of();
+    /** The same vehicles in a plain array, for the passes every car makes over the traffic each tick. */
+    private Vehicle[] vehicleArray = new Vehicle[0];
     private AutonomousCar autonomousCar;
     private final Telemetry telemetry = new SceneTelemetry(this);
 
@@ -85,6 +87,7 @@ public final class Scene {
         all.addAll(moving);
         scene.movingCars = List.copyOf(moving);
         scene.vehicles = List.copyOf(all);
+        scene.vehicleArray = all.toArray(new Vehicle[0]);
         return scene;
     }
 
@@ -139,11 +142,16 @@ public final class Scene {
         return vehicles;
     }
 
+    /** {@link #vehicles()} as an array, the autonomous car first: read it, never write it. */
+    Vehicle[] vehicleArray() {
+        return vehicleArray;
+    }
+
     /** Whether any active vehicle other than {@code self} has part of its footprint in the junction's square. */
     boolean isOccupiedByOther(Junction junction, Vehicle self) {
         double jx = junction.centre().x();
         double jy = junction.centre().y();
-        for (Vehicle v : vehicles) {
+        for (Vehicle v : vehicleArray) {
             // a vehicle whose front is further than its length plus the square's half-diagonal cannot reach in
             double reach = v.length() + 4.3;
             if (v != self && v.isActive() && Math.abs(v.x() - jx) < reach && Math.abs(v.y() - jy) < reach
@@ -162,5 +170,6 @@ public final class Scene {
         all.add(car);
         movingCars = List.copyOf(moving);
         vehicles = List.copyOf(all);
+        vehicleArray = all.toArray(new Vehicle[0]);
     }
 }

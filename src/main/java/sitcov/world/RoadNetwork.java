@@ -63,9 +63,12 @@ public final class RoadNetwork {
         private final Map<Road, List<Junction>> junctionsOn = new IdentityHashMap<>();
         /** Per kind and axis, the markings whose strips run along that axis, in marking order: the camera looks for these. */
         private final Map<MarkingKind, Map<Axis, List<Marking>>> markingsAlong = new EnumMap<>(MarkingKind.class);
+        /** Which roads can hold a point: cars and the oracle ask where they are many times a tick. */
+        private final RoadGrid grid;
 
         private Lookups(RoadNetwork network) {
             deadEnds = network.junctions.stream().filter(Junction::isDeadEnd).toList();
+            grid = new RoadGrid(network.roads);
             for (Road road : network.roads) {
                 junctionsOn.put(road, network.carried(road));
             }
@@ -124,6 +127,15 @@ public final class RoadNetwork {
     /** The markings of {@code kind} whose strips are longer along {@code axis} than across it, in marking order. */
     public List<Marking> markings(MarkingKind kind, Axis axis) {
         return lookups().markingsAlong.get(kind).get(axis);
+    }
+
+    /**
+     * The indices in {@link #roads()}, in road order, of the roads that can hold the point: every road
+     * that holds it is among them, so scanning them in order finds what scanning every road finds.
+     * The array is shared: read it, never write it.
+     */
+    public int[] roadsNear(double x, double y) {
+        return lookups().grid.near(x, y);
     }
 
     /** The first road (in road order) whose surface holds the point, or null. */

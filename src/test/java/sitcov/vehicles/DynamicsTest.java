@@ -100,6 +100,48 @@ class DynamicsTest {
         }
     }
 
+    @Test
+    void slowingToATargetFollowsThePlainBisectionToTheBitRightAtEachDecisiveDistance() {
+        // the distances where the answer changes are the slowing distances of the bisection's midpoints:
+        // each of them, and the doubles either side, on every millimetre-a-tick speed
+        double[] targets = {0, 0.38, 0.5, 1.0};
+        for (double target : targets) {
+            for (int mm = 0; mm <= 2500; mm++) {
+                double at = slowing(mm * 0.001, target);
+                for (double distance : new double[] {Math.nextDown(at), at, Math.nextUp(at)}) {
+                    assertEquals(Double.doubleToRawLongBits(plainBisection(target, distance)),
+                            Double.doubleToRawLongBits(Dynamics.speedToSlowTo(target, distance)),
+                            "target " + target + ", distance " + distance);
+                }
+            }
+        }
+    }
+
+    @Test
+    void speedToStopWithinIsTheLastMillimetreATickThatStopsInTime() {
+        // an independent statement: the largest k with stoppingDistance(k mm a tick) <= distance, tried at
+        // each tabulated stopping distance, the doubles either side, and between them
+        for (int mm = 0; mm <= 2500; mm++) {
+            double at = Dynamics.stoppingDistance(mm * 0.001);
+            for (double distance : new double[] {Math.nextDown(at), at, Math.nextUp(at), at + 0.0004}) {
+                double expected;
+                if (distance <= 0) {
+                    expected = 0;
+                } else if (distance >= Dynamics.stoppingDistance(Dynamics.MAX_SPEED)) {
+                    expected = Dynamics.MAX_SPEED;
+                } else {
+                    int k = 0;
+                    while (k + 1 <= 2500 && Dynamics.stoppingDistance((k + 1) * 0.001) <= distance) {
+                        k++;
+                    }
+                    expected = k * 0.001;
+                }
+                assertEquals(Double.doubleToRawLongBits(expected), Double.doubleToRawLongBits(Dynamics.speedToStopWithin(distance)),
+                        "distance " + distance);
+            }
+        }
+    }
+
     /** The bisection as written before the tree: an independent statement of what speedToSlowTo must answer. */
     private static double plainBisection(double target, double distance) {
         if (distance <= 0 || target >= Dynamics.MAX_SPEED) {

@@ -35,7 +35,6 @@ public final class MovingCar implements Bodied, Steppable {
     static final double GAP = 2;
     /** How deep inside a road's surface (metres) a front centre puts the footprint on the road beyond doubt. */
     private static final double DEEP = 0.01;
-    /** Vehicles further than this (squared, metres) cannot matter to keeping distance this tick. */
     /** Ticks standing still after which the driver stops waiting for other standing moving cars. */
     static final int IMPATIENCE = 40;
     /**

@@ -68,6 +68,17 @@ public final class ModelCopy {
             if (isValue(type) || immutable.test(type)) {
                 return SHARED;
             }
+            if (type.isRecord()) {
+                // a record's fields cannot be set, so it can only be shared: it must hold nothing that changes
+                for (java.lang.reflect.RecordComponent c : type.getRecordComponents()) {
+                    if (of(c.getType(), immutable) != SHARED) {
+                        throw new IllegalStateException("cannot checkpoint record " + type.getName() + ": its "
+                                + c.getName() + " (" + c.getType().getSimpleName() + ") may change; give it"
+                                + " components that are values, or make it a class");
+                    }
+                }
+                return SHARED;
+            }
             if (type.isArray()) {
                 return ARRAY;
             }
@@ -151,7 +162,7 @@ public final class ModelCopy {
     }
 
     private static boolean isValue(Class<?> type) {
-        return type.isPrimitive() || type.isEnum() || type.isRecord() || type == String.class || type == Class.class
+        return type.isPrimitive() || type.isEnum() || type == String.class || type == Class.class
                 || Number.class.isAssignableFrom(type) && type.getName().startsWith("java.lang.")
                 || type == Boolean.class || type == Character.class
                 || type.getSuperclass() != null && type.getSuperclass().isEnum(); // an enum constant with a body

@@ -99,4 +99,21 @@ class ModelCopyTest {
         assertEquals(streams.stream("a").nextLong(), copy.stream("a").nextLong());
         assertEquals(streams.stream("b").nextDouble(), copy.stream("b").nextDouble());
     }
+
+    record Reading(double value, String unit) {
+    }
+
+    record Buffer(double[] values) {
+    }
+
+    @Test
+    void aRecordOfValuesIsSharedAndOneHoldingWhatMayChangeIsRefused() {
+        Reading reading = new Reading(2, "m");
+        Holder copy = ModelCopy.of(new Holder(reading), NOTHING_MORE);
+        assertSame(reading, copy.held);
+        IllegalStateException e = assertThrows(IllegalStateException.class,
+                () -> ModelCopy.of(new Holder(new Buffer(new double[2])), NOTHING_MORE));
+        assertTrue(e.getMessage().contains("record") && e.getMessage().contains("values (double[]) may change"),
+                e.getMessage());
+    }
 }

@@ -161,28 +161,31 @@ final class BenchCommand implements Command {
         err.println("bench: judging maps 1.." + judged + " with all twenty faults, forked and run whole ...");
         List<Fault> all = List.of(Fault.values());
         ControllerFactory whole = BuiltinCar.FACTORY.unforked();
-        // both warmed, then alternated round by round (the first of a pair runs on a colder cache)
-        judgeSeconds(judgedMaps.subList(0, Math.min(3, judged)), all, BuiltinCar.FACTORY);
-        judgeSeconds(judgedMaps.subList(0, Math.min(3, judged)), all, whole);
+        // both warmed on a map, then alternated round by round (the first of a pair runs on a colder cache)
+        stepped(judgedMaps.subList(0, 1), all, BuiltinCar.FACTORY);
+        stepped(judgedMaps.subList(0, 1), all, whole);
         double[] forkedRounds = new double[FORK_ROUNDS];
         double[] wholeRounds = new double[FORK_ROUNDS];
+        long forkedTicks = 0;
+        long wholeTicks = 0;
         for (int r = 0; r < FORK_ROUNDS; r++) {
+            long start = System.nanoTime();
             if (r % 2 == 0) {
-                forkedRounds[r] = judgeSeconds(judgedMaps, all, BuiltinCar.FACTORY) / judged;
-                wholeRounds[r] = judgeSeconds(judgedMaps, all, whole) / judged;
+                forkedTicks = stepped(judgedMaps, all, BuiltinCar.FACTORY);
+                long between = System.nanoTime();
+                wholeTicks = stepped(judgedMaps, all, whole);
+                forkedRounds[r] = (between - start) / 1e9 / judged;
+                wholeRounds[r] = (System.nanoTime() - between) / 1e9 / judged;
             } else {
-                wholeRounds[r] = judgeSeconds(judgedMaps, all, whole) / judged;
-                forkedRounds[r] = judgeSeconds(judgedMaps, all, BuiltinCar.FACTORY) / judged;
+                wholeTicks = stepped(judgedMaps, all, whole);
+                long between = System.nanoTime();
+                forkedTicks = stepped(judgedMaps, all, BuiltinCar.FACTORY);
+                wholeRounds[r] = (between - start) / 1e9 / judged;
+                forkedRounds[r] = (System.nanoTime() - between) / 1e9 / judged;
             }
         }
         double forkedSeconds = median(forkedRounds);
         double wholeSeconds = median(wholeRounds);
-        long forkedTicks = 0;
-        long wholeTicks = 0;
-        for (WorldMap map : judgedMaps) {
-            forkedTicks += MapRunner.ticksStepped(map, map.seed(), all, FaultyRuns.UNTIL_VERDICT, BuiltinCar.FACTORY);
-            wholeTicks += MapRunner.ticksStepped(map, map.seed(), all, FaultyRuns.UNTIL_VERDICT, whole);
-        }
 
         double runSeconds = runNanos / 1e9;
         double layoutSeconds = layoutNanos / 1e9;
@@ -333,12 +336,13 @@ final class BenchCommand implements Command {
         return sorted[sorted.length / 2];
     }
 
-    private static double judgeSeconds(List<WorldMap> maps, List<Fault> faults, ControllerFactory car) {
-        long start = System.nanoTime();
+    /** Judges {@code maps} with {@code faults} as an experiment does; the ticks the judging stepped. */
+    private static long stepped(List<WorldMap> maps, List<Fault> faults, ControllerFactory car) {
+        long ticks = 0;
         for (WorldMap map : maps) {
-            sink += MapRunner.judge(map, map.seed(), faults, FaultyRuns.UNTIL_VERDICT, car).ticks();
+            ticks += MapRunner.ticksStepped(map, map.seed(), faults, FaultyRuns.UNTIL_VERDICT, car);
         }
-        return (System.nanoTime() - start) / 1e9;
+        return ticks;
     }
 
     private static long candidateNanos(long firstSeed, int count) {

@@ -44,20 +44,17 @@ final class ForkedRuns {
             }
         }
         departing.sort(Comparator.comparingLong(i -> watching.shadow(faults.get(i)).departureTick()));
-        LiveRun feeder = departing.isEmpty() ? null : new LiveRun(map, internalSeed, Set.of(), controller);
+        Feeder feeder = new Feeder(map, internalSeed, controller);
         for (int i : departing) {
             Shadow shadow = watching.shadow(faults.get(i));
             long departs = shadow.departureTick();
-            while (feeder.tick() < departs - 1) {
-                feeder.step();
-            }
-            LiveRun faulty = feeder.forkWith(shadow.fault(), shadow.reachedBefore(departs)).judged();
+            LiveRun faulty = feeder.at(departs).forkWith(shadow.fault(), shadow.reachedBefore(departs)).judged();
             VerdictWatch watch = length == FaultyRuns.UNTIL_VERDICT ? new VerdictWatch(faultFree) : null;
             RunRecord run = Simulator.drive(faulty, RunObserver.NONE, watch);
             stepped += run.result().ticks() - departs;
             verdicts[i] = DifferentialOracle.judge(faultFree, run, shadow.fault());
         }
-        stepped += feeder == null ? 0 : feeder.tick() + 1;
+        stepped += feeder.ticks();
         return new Judging(new JudgedMap(faultFree, List.of(verdicts)), stepped);
     }
 
@@ -89,13 +86,10 @@ final class ForkedRuns {
             }
         }
         departing.sort(Comparator.comparingLong(v -> departs[v]));
-        LiveRun feeder = departing.isEmpty() ? null : new LiveRun(map, internalSeed, Set.of(), reference);
+        Feeder feeder = new Feeder(map, internalSeed, reference);
         for (int v : departing) {
-            while (feeder.tick() < departs[v] - 1) {
-                feeder.step();
-            }
             List<Shadow> shadows = planted.get(v).stream().sorted().map(watching::shadow).toList();
-            runs[v] = Simulator.drive(feeder.forkWith(shadows), RunObserver.NONE, null).result();
+            runs[v] = Simulator.drive(feeder.at(departs[v]).forkWith(shadows), RunObserver.NONE, null).result();
         }
         List<RunResult> all = new ArrayList<>(runs.length + 1);
         all.add(base);
@@ -110,5 +104,35 @@ final class ForkedRuns {
             activations.add(f == shadow.fault() ? shadow.activation() : new Activation(f, false, false, 0, -1));
         }
         return new RunRecord(faultFree, Set.of(shadow.fault()), activations);
+    }
+
+    /** The fault-free run the checkpoints come from, made when first asked for and stepped on to each departure in turn. */
+    private static final class Feeder {
+        private final WorldMap map;
+        private final long internalSeed;
+        private final ControllerFactory controller;
+        private LiveRun run;
+
+        Feeder(WorldMap map, long internalSeed, ControllerFactory controller) {
+            this.map = map;
+            this.internalSeed = internalSeed;
+            this.controller = controller;
+        }
+
+        /** The run at the start of tick {@code departs}; departures must come in order. */
+        LiveRun at(long departs) {
+            if (run == null) {
+                run = new LiveRun(map, internalSeed, Set.of(), controller);
+            }
+            while (run.tick() < departs - 1) {
+                run.step();
+            }
+            return run;
+        }
+
+        /** The ticks stepped so far. */
+        long ticks() {
+            return run == null ? 0 : run.tick() + 1;
+        }
     }
 }

@@ -31,9 +31,9 @@ class ForkedRunsTest {
     void generatedMapsAreJudgedAlikeForkedAndWholeAndSomeFaultsNeedNoRunOfTheirOwn() {
         int found = 0;
         int neverDeparted = 0;
-        for (long seed = 1; seed <= 8; seed++) {
+        for (long seed = 1; seed <= 6; seed++) {
             WorldMap map = MapGenerator.generate(seed);
-            FaultyRuns length = seed % 2 == 0 ? FaultyRuns.UNTIL_VERDICT : FaultyRuns.TO_END;
+            FaultyRuns length = seed <= 2 ? FaultyRuns.TO_END : FaultyRuns.UNTIL_VERDICT;
             JudgedMap whole = MapRunner.judge(map, seed, ALL, length, BuiltinCar.FACTORY.unforked());
             JudgedMap forked = MapRunner.judge(map, seed, ALL, length, BuiltinCar.FACTORY);
             assertEquals(whole, forked, "map " + seed + " internal seed " + seed + " " + length);

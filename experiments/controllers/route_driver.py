@@ -85,7 +85,8 @@ TRAFFIC_MARGIN = 3.0         # gap kept to a vehicle ahead when stopped behind i
 PARKED_WAIT_GAP = 5.0        # stops this far behind a parked car it cannot pass yet
 PULL_OUT_AT = 8.0            # pulls out once the parked car's near end is this near its front
 PASS_SPEED = 1.6
-PULL_IN_BUFFER = 2.0         # pulls in once its tail is this far past the row
+PULL_IN_SPEED = 1.2
+PULL_IN_BUFFER = 1.0         # pulls in once its tail is this far past the row
 ROW_GAP = 16.0               # parked cars nearer than this along the lane are passed as one row
 OVERTAKE_LOOK = 80.0
 
@@ -690,10 +691,14 @@ class Driver:
         if cam is not None and abs((LANE_CENTRE + cam) - my_s) < 0.4:
             s_est = LANE_CENTRE + cam
             self.camera_used += 1
-        look = max(4.0, 2.5 * obs["speed"] + 3.0)
+        if self.overtake is None:
+            look = max(4.0, 2.5 * obs["speed"] + 3.0)
+        else:
+            # pulling out or in is a swerve that must be done within a few metres (the centre line
+            # is excused only near the parked car): look nearer, and allow up to 40 degrees
+            look = max(2.5, 1.5 * obs["speed"] + 1.5)
         aim = self.lane_b + math.degrees(math.atan2(want_s - s_est, look))
-        # a parked car to pass is a bigger swerve: allow up to 35 degrees off the lane
-        aim = self.lane_b + max(-35.0, min(35.0, wrap(aim - self.lane_b)))
+        aim = self.lane_b + max(-40.0, min(40.0, wrap(aim - self.lane_b)))
         steer = wrap(aim - obs["heading"])
         if limit <= 0.0 and obs["speed"] <= HARD_BRAKE:
             steer = 0.0 if abs(want_s - my_s) < 0.3 else steer
@@ -822,7 +827,7 @@ class Driver:
                 return -LANE_CENTRE, min(limit, PASS_SPEED)
             if abs(my_s - LANE_CENTRE) < 0.3:
                 self.overtake = None
-            return want_s, min(limit, PASS_SPEED)
+            return want_s, min(limit, PULL_IN_SPEED)
         if row is None:
             return want_s, limit
         gap = row[0] - my_along

@@ -85,8 +85,9 @@ TRAFFIC_MARGIN = 3.0         # gap kept to a vehicle ahead when stopped behind i
 PARKED_WAIT_GAP = 5.0        # stops this far behind a parked car it cannot pass yet
 PULL_OUT_AT = 8.0            # pulls out once the parked car's near end is this near its front
 PASS_SPEED = 1.6
+PASS_OFFSET = -0.9             # passes with its centre this far right of the centre line
 PULL_IN_SPEED = 1.2
-PULL_IN_BUFFER = 1.0         # pulls in once its tail is this far past the row
+PULL_IN_BUFFER = 0.6         # pulls in once its tail is this far past the row
 ROW_GAP = 16.0               # parked cars nearer than this along the lane are passed as one row
 OVERTAKE_LOOK = 80.0
 
@@ -782,52 +783,55 @@ class Driver:
     # ---------------------------------------------------------------- parked cars
     def parked_cars(self, obs, my_along, my_s, want_s, limit):
         """Stops behind parked cars in its lane, or passes them in the other lane when it is clear."""
-        rows = []   # (near, far) along-lane extents of parked cars standing in its lane, ahead
+        mine = []    # (near, far) along-lane extents of parked cars standing in its lane
         other_lane = []
         for o in obs.get("obstacles", ()):
+            if abs(self.map.across_left(self.segment[0], self.lane_b, o["x"], o["y"])) > HALF_ROAD + 1:
+                continue   # on another road
             fr = [self.to_frame(x, y) for x, y in box(o["x"], o["y"], o["bearing"], o["length"], o["width"])]
             lo, hi = min(s for _, s in fr), max(s for _, s in fr)
             near, far = min(a for a, _ in fr), max(a for a, _ in fr)
-            if abs(self.map.across_left(self.segment[0], self.lane_b, o["x"], o["y"])) > HALF_ROAD + 1:
-                continue   # on another road
-            if far < my_along - CAR_LENGTH - 1 or near > my_along + OVERTAKE_LOOK:
+            if far < my_along - CAR_LENGTH - 3 or near > my_along + OVERTAKE_LOOK:
                 continue
             if hi > 0.3 and lo < HALF_ROAD:
-                rows.append((near, far))
+                mine.append((near, far))
             elif lo < -0.3 and hi > -HALF_ROAD:
                 other_lane.append((near, far))
-        rows.sort()
-        # the row ahead: cars closer than ROW_GAP one after another are passed in one go
-        row = None
-        for near, far in rows:
-            if far < my_along - CAR_LENGTH - PULL_IN_BUFFER:
-                continue
-            if row is None:
-                row = [near, far]
-            elif near - row[1] < ROW_GAP:
-                row[1] = max(row[1], far)
+        mine.sort()
+        # rows: cars closer than ROW_GAP one after another are passed in one go
+        rows = []
+        for near, far in mine:
+            if rows and near - rows[-1][1] < ROW_GAP:
+                rows[-1][1] = max(rows[-1][1], far)
             else:
-                break
+                rows.append([near, far])
+        # the row it is passing or will pass next: the first its tail is not yet clear of
+        rows = [r for r in rows if r[1] + PULL_IN_BUFFER >= my_along - CAR_LENGTH]
+        row = rows[0] if rows else None
         if self.overtake == "out":
-            if row is None or my_along - CAR_LENGTH > row[1] + PULL_IN_BUFFER:
-                self.overtake = "in"
+            if row is None or row[0] > self.row_end + 0.5:
+                self.overtake = "in"     # its tail is clear of the row it passed
             else:
                 self.row_end = row[1]
-                if self.oncoming_conflict(obs, my_along, row[1], other_lane):
+                if self.oncoming_conflict(obs, my_along, row, other_lane):
                     if my_along < row[0] - 1.0 and my_s > -0.3:
                         # not yet beside the row: go back to its lane and wait
                         self.overtake = None
                         return LANE_CENTRE, min(limit, stop_speed(row[0] - my_along - 1.5, HARD_BRAKE))
                     # beside the row: stand still until the other car has passed or given up
-                    return -LANE_CENTRE, 0.0
-                return -LANE_CENTRE, min(limit, PASS_SPEED)
+                    return PASS_OFFSET, 0.0
+                return PASS_OFFSET, min(limit, PASS_SPEED)
         if self.overtake == "in":
-            if row is not None and row[0] - my_along < PULL_OUT_AT:
-                self.overtake = "out"
-                return -LANE_CENTRE, min(limit, PASS_SPEED)
-            if abs(my_s - LANE_CENTRE) < 0.3:
-                self.overtake = None
-            return want_s, min(limit, PULL_IN_SPEED)
+            if row is None or row[0] - my_along > PULL_OUT_AT:
+                if abs(my_s - LANE_CENTRE) < 0.3:
+                    self.overtake = None
+                speed = PULL_IN_SPEED
+                if any(far > my_along - CAR_LENGTH and near < my_along + 8.0 for near, far in other_lane):
+                    # a car parked in the other lane just after the row: pull in slowly, so the
+                    # car's body swings in before it comes up to it
+                    speed = 0.5
+                return want_s, min(limit, speed)
+            self.overtake = None     # another row right after: decide again below
         if row is None:
             return want_s, limit
         gap = row[0] - my_along
@@ -836,19 +840,19 @@ class Driver:
             ta, _ = self.to_frame(t["x"], t["y"])
             if my_along - 1 < ta < row[0] - 1.0:
                 return want_s, limit   # the Target comes before the row
-        if gap < PULL_OUT_AT and not self.oncoming_conflict(obs, my_along, row[1], other_lane):
+        if gap < PULL_OUT_AT and not self.oncoming_conflict(obs, my_along, row, other_lane):
             self.overtake = "out"
             self.row_end = row[1]
-            return -LANE_CENTRE, min(limit, PASS_SPEED)
+            return PASS_OFFSET, min(limit, PASS_SPEED)
         return want_s, min(limit, stop_speed(gap - PARKED_WAIT_GAP))
 
-    def oncoming_conflict(self, obs, my_along, row_far, other_lane):
-        """Whether the other lane is not clear for a pass to row_far and back into its lane."""
-        pass_length = max(0.0, row_far - my_along) + CAR_LENGTH + PULL_IN_BUFFER + 7.0
+    def oncoming_conflict(self, obs, my_along, row, other_lane):
+        """Whether the other lane is not clear for a pass of the row and back into its lane."""
+        pass_length = max(0.0, row[1] - my_along) + CAR_LENGTH + PULL_IN_BUFFER + 7.0
         ticks = pass_length / PASS_SPEED + 6
         for near, far in other_lane:
-            if far > my_along - 1 and near < my_along + pass_length:
-                return True   # a car parked in the other lane where it would drive
+            if far > max(my_along - CAR_LENGTH, row[0] - 4.0) and near < row[1] + 2.0:
+                return True   # a car parked in the other lane where it would drive out there
         for t in obs.get("traffic", ()):
             ta, ts = self.to_frame(t["x"], t["y"])
             rel = wrap(t["heading"] - self.lane_b)

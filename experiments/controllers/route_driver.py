@@ -53,7 +53,10 @@ on stdout; it exits at the end of its input. Diagnostics go to stderr (sitcov ke
 import heapq
 import json
 import math
+import os
 import sys
+
+DEBUG = os.environ.get("ROUTE_DRIVER_DEBUG") == "1"   # a line a tick on stderr: what limited the speed
 
 # --- the world (README: roads 6 m, two 3 m lanes, junction squares 6 x 6 m, car 2 x 2 m) ---
 HALF_ROAD = 3.0
@@ -243,12 +246,12 @@ class RoadMap:
         """Whether a car in the lane of bearing b on road rid can come within reach of the Target."""
         if rid != self.target["road"]:
             return False
-        return self.across_left(rid, b, self.target["x"], self.target["y"]) >= -0.3
+        return self.across_left(rid, b, self.target["x"], self.target["y"]) >= -0.25
 
-    def plan(self, rid, b, ahead, x, y):
+    def plan(self, rid, b, ahead, x, y, allow_here=True):
         """Exits to take, [(junction, exit bearing), ...], from a car on road rid facing b before junction ahead."""
         t = self.target
-        if self.target_reachable_from(rid, b) and t["road"] == rid:
+        if allow_here and self.target_reachable_from(rid, b) and t["road"] == rid:
             if (self.along(rid, t["x"], t["y"]) - self.along(rid, x, y)) * (1 if b in (0.0, 90.0) else -1) > -0.5:
                 return []
         if ahead is None:
@@ -669,9 +672,19 @@ class Driver:
         if target_here:
             ta, ts = self.to_frame(t["x"], t["y"])
             to_go = ta - my_along
-            if -1.5 < to_go < 15:
-                want_s = max(1.1, min(1.85, ts))
-            limit = min(limit, max(0.3, stop_speed(to_go + 0.5)))
+            if to_go < -1.5 and self.overtake is None:
+                # driven past it (it lay beside a parked car, say): plan the way round again
+                self.route = self.map.plan(rid, self.lane_b, ahead, obs["x"], obs["y"], allow_here=False)
+                target_here = False
+            else:
+                if to_go < 15:
+                    # within its lane, as near the Target's offset as the lane's lines allow
+                    want_s = max(1.15, min(1.8, ts))
+                limit = min(limit, max(0.3, stop_speed(to_go + 0.3)))
+                if abs(want_s - my_s) > 0.5 and self.overtake != "out":
+                    limit = min(limit, max(0.3, stop_speed(to_go - 1.0)))
+        if self.route is None and ahead is None:
+            return 0.0, 0.0    # lost (beyond the last junction of its road): stand still
 
         # --- junction ahead
         if ahead is not None and not target_here:
@@ -686,6 +699,10 @@ class Driver:
         if gap < math.inf:
             limit = min(limit, self.follow_limit(gap, lead))
 
+        if DEBUG:
+            print("t%d seg%s route%s ov=%s want_s=%.2f my_s=%.2f along=%.1f gap=%.1f lead=%.2f limit=%.2f"
+                  % (obs["tick"], self.segment, self.route[:2] if self.route else self.route, self.overtake,
+                     want_s, my_s, my_along, gap, lead, limit), file=sys.stderr)
         # --- steering: towards the wanted offset in the lane
         cam = self.lane_camera_offset(obs) if self.overtake is None else None
         s_est = my_s
@@ -697,12 +714,15 @@ class Driver:
         else:
             # pulling out or in is a swerve that must be done within a few metres (the centre line
             # is excused only near the parked car): look nearer, and allow up to 40 degrees
-            look = max(2.5, 1.5 * obs["speed"] + 1.5)
+            look = max(1.0, 1.5 * obs["speed"] + 1.0)
+        bound = 40.0
+        if self.overtake == "squeeze":
+            look, bound = 1.0, 50.0
         aim = self.lane_b + math.degrees(math.atan2(want_s - s_est, look))
-        aim = self.lane_b + max(-40.0, min(40.0, wrap(aim - self.lane_b)))
+        aim = self.lane_b + max(-bound, min(bound, wrap(aim - self.lane_b)))
         steer = wrap(aim - obs["heading"])
-        if limit <= 0.0 and obs["speed"] <= HARD_BRAKE:
-            steer = 0.0 if abs(want_s - my_s) < 0.3 else steer
+        if limit <= 0.05 and obs["speed"] <= HARD_BRAKE and self.overtake != "squeeze":
+            steer = 0.0   # standing (or about to): hold the wheel, turning on the spot swings the front about
         return limit, steer
 
     def approach_junction(self, obs, j, claims):
@@ -798,10 +818,18 @@ class Driver:
             elif lo < -0.3 and hi > -HALF_ROAD:
                 other_lane.append((near, far))
         mine.sort()
+        t = self.map.target
+        target_ta = None
+        if self.route == [] and self.segment[0] == t["road"]:
+            target_ta, _ = self.to_frame(t["x"], t["y"])
+            # parked cars beyond the Target do not matter: the run ends there
+            mine = [m for m in mine if m[0] < target_ta]
         # rows: cars closer than ROW_GAP one after another are passed in one go
         rows = []
         for near, far in mine:
-            if rows and near - rows[-1][1] < ROW_GAP:
+            if rows and near - rows[-1][1] < ROW_GAP and not any(
+                    f > rows[-1][1] - 1 and n < near + 1 for n, f in other_lane):
+                # (a car parked in the other lane in the gap splits the row: it pulls in between)
                 rows[-1][1] = max(rows[-1][1], far)
             else:
                 rows.append([near, far])
@@ -809,18 +837,32 @@ class Driver:
         rows = [r for r in rows if r[1] + PULL_IN_BUFFER >= my_along - CAR_LENGTH]
         row = rows[0] if rows else None
         if self.overtake == "out":
-            if row is None or row[0] > self.row_end + 0.5:
+            squeeze = target_ta is not None and row is not None and row[1] < target_ta < row[1] + 8.0
+            if squeeze and my_along > row[1] + 1.7:
+                # the Target just past the row: squeeze in at it once the front is past the row
+                # (turning about its rear axle, the car's tail swings away from the parked car)
+                self.overtake = "squeeze"
+            elif row is None or row[0] > self.row_end + 0.5:
                 self.overtake = "in"     # its tail is clear of the row it passed
             else:
                 self.row_end = row[1]
-                if self.oncoming_conflict(obs, my_along, row, other_lane):
+                if self.oncoming_conflict(obs, my_along, row, [], committed=my_along >= row[0] - 1.0):
                     if my_along < row[0] - 1.0 and my_s > -0.3:
                         # not yet beside the row: go back to its lane and wait
                         self.overtake = None
                         return LANE_CENTRE, min(limit, stop_speed(row[0] - my_along - 1.5, HARD_BRAKE))
                     # beside the row: stand still until the other car has passed or given up
                     return PASS_OFFSET, 0.0
-                return PASS_OFFSET, min(limit, PASS_SPEED)
+                if squeeze:
+                    limit = min(limit, max(0.3, stop_speed(row[1] + 1.8 - my_along)))
+                return PASS_OFFSET, min(limit, PASS_SPEED, self.pull_out_speed(my_along, my_s, row))
+        if self.overtake == "squeeze":
+            if target_ta is None or target_ta < my_along - 1.5:
+                self.overtake = None
+            # turn (on the spot) first, then creep towards it
+            if abs(want_s - my_s) > 0.6 and abs(wrap(obs["heading"] - self.lane_b)) < 25:
+                return want_s, 0.0
+            return want_s, min(limit, 0.3)
         if self.overtake == "in":
             if row is None or row[0] - my_along > PULL_OUT_AT:
                 if abs(my_s - LANE_CENTRE) < 0.3:
@@ -835,21 +877,32 @@ class Driver:
         if row is None:
             return want_s, limit
         gap = row[0] - my_along
-        t = self.map.target
-        if self.route == [] and self.segment[0] == t["road"]:
-            ta, _ = self.to_frame(t["x"], t["y"])
-            if my_along - 1 < ta < row[0] - 1.0:
-                return want_s, limit   # the Target comes before the row
+        if target_ta is not None and my_along - 1 < target_ta < row[0] - 1.0:
+            return want_s, limit   # the Target comes before the row
         if gap < PULL_OUT_AT and not self.oncoming_conflict(obs, my_along, row, other_lane):
             self.overtake = "out"
             self.row_end = row[1]
-            return PASS_OFFSET, min(limit, PASS_SPEED)
+            return PASS_OFFSET, min(limit, PASS_SPEED, self.pull_out_speed(my_along, my_s, row))
         return want_s, min(limit, stop_speed(gap - PARKED_WAIT_GAP))
 
-    def oncoming_conflict(self, obs, my_along, row, other_lane):
-        """Whether the other lane is not clear for a pass of the row and back into its lane."""
+    @staticmethod
+    def pull_out_speed(my_along, my_s, row):
+        """Slow enough to be clear of the row sideways before the front comes up to it."""
+        sideways = my_s - (PASS_OFFSET + 0.4)
+        room = row[0] - my_along - 0.3
+        if sideways > 0 and room < sideways / 0.8 + 1.5:
+            return 0.2     # turning about the rear axle does most of the swerve
+        return MAX_SPEED
+
+    def oncoming_conflict(self, obs, my_along, row, other_lane, committed=False):
+        """Whether the other lane is not clear for a pass of the row and back into its lane.
+
+        Committed (beside the row already), it asks only whether a vehicle coming the other way is
+        so near that it must stand still for it: going on at pass speed is then the quicker way out."""
         pass_length = max(0.0, row[1] - my_along) + CAR_LENGTH + PULL_IN_BUFFER + 7.0
         ticks = pass_length / PASS_SPEED + 6
+        if committed:
+            ticks = 4
         for near, far in other_lane:
             if far > max(my_along - CAR_LENGTH, row[0] - 4.0) and near < row[1] + 2.0:
                 return True   # a car parked in the other lane where it would drive out there

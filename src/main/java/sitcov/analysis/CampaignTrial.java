@@ -8,7 +8,7 @@ import sitcov.experiment.StopReason;
 import sitcov.faults.Fault;
 import sitcov.judge.FaultOutcome;
 import sitcov.judge.Notion;
-import sitcov.oracle.AccidentType;
+import sitcov.oracle.Failure;
 import sitcov.stats.KaplanMeier;
 
 /**
@@ -21,7 +21,7 @@ import sitcov.stats.KaplanMeier;
  */
 public record CampaignTrial(Fault fault, String driver, int trial, long campaignSeed, String streamLabel,
                             boolean falsified, long ticksToFailure, long survivalTicks, int mapsRun, StopReason stop,
-                            Optional<MapRun> found, Optional<AccidentType> accident) {
+                            Optional<MapRun> found, Optional<Failure> accident) {
     /** The trial as {@code run} (one driver's share of replication {@code trial}) recorded it. */
     public static CampaignTrial of(Fault fault, int trial, long campaignSeed, String streamLabel, long tickBudget,
                                    DriverRun run) {
@@ -31,7 +31,7 @@ public record CampaignTrial(Fault fault, String driver, int trial, long campaign
             spent += m.ticks();
             maps++;
             Optional<FaultOutcome> hit = m.faults().stream()
-                    .filter(f -> f.fault() == fault && f.found(Notion.DIFFERENTIAL)).findFirst();
+                    .filter(f -> f.variant().id() == fault.id() && f.found(Notion.DIFFERENTIAL)).findFirst();
             if (hit.isPresent()) {
                 boolean within = spent <= tickBudget;
                 return new CampaignTrial(fault, run.driver(), trial, campaignSeed, streamLabel, within, spent,
@@ -53,7 +53,7 @@ public record CampaignTrial(Fault fault, String driver, int trial, long campaign
         if (!falsified) {
             return Optional.empty();
         }
-        return Optional.of(found.orElseThrow().cell() + "×" + accident.map(AccidentType::column).orElse("?"));
+        return Optional.of(found.orElseThrow().cell() + "×" + accident.map(Failure::column).orElse("?"));
     }
 
     static List<KaplanMeier.Observation> observations(List<CampaignTrial> trials) {

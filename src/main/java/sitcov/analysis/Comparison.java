@@ -10,7 +10,7 @@ import sitcov.experiment.Direction;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.Measure;
 import sitcov.experiment.ReplicationResult;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.Notion;
 import sitcov.stats.Bootstrap;
 import sitcov.stats.ConfidenceInterval;
@@ -143,7 +143,7 @@ public final class Comparison {
         }
     }
 
-    private static void faults(PairedReplications pair, List<Fault> list, RandomGenerator random,
+    private static void faults(PairedReplications pair, List<Variant> list, RandomGenerator random,
             List<FaultComparison> out) {
         long mapsA = Arrays.stream(pair.mapsA()).sum();
         long mapsB = Arrays.stream(pair.mapsB()).sum();
@@ -284,7 +284,7 @@ public final class Comparison {
             finding = Finding.INCONCLUSIVE;
         }
         PairedDifference judged = d.adjusted(pAdjusted, tested ? detectable(d, familyLevel, true) : Double.NaN);
-        return new FaultComparison(f.fault(), f.driverA(), f.driverB(), judged, f.dispersionA(), f.dispersionB(),
+        return new FaultComparison(f.variant(), f.driverA(), f.driverB(), judged, f.dispersionA(), f.dispersionB(),
                 f.foundA(), f.mapsA(), f.foundB(), f.mapsB(), f.pFisher(), f.oddsRatio(), f.oddsLow(), f.oddsHigh(),
                 finding, note);
     }

@@ -4,7 +4,7 @@ import java.util.Arrays;
 import java.util.List;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.MapRun;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.Notion;
 
 /**
@@ -17,19 +17,19 @@ public final class Discovery {
     /** Marks a fault never found. */
     public static final long NEVER = -1;
 
-    private final List<Fault> faults;
+    private final List<Variant> faults;
     private final long[] ticksAtFirst;
     private final int[] candidatesAtFirst;
     private final long ticksSpent;
 
-    private Discovery(List<Fault> faults, long[] ticksAtFirst, int[] candidatesAtFirst, long ticksSpent) {
+    private Discovery(List<Variant> faults, long[] ticksAtFirst, int[] candidatesAtFirst, long ticksSpent) {
         this.faults = faults;
         this.ticksAtFirst = ticksAtFirst;
         this.candidatesAtFirst = candidatesAtFirst;
         this.ticksSpent = ticksSpent;
     }
 
-    public static Discovery of(DriverRun run, List<Fault> faults) {
+    public static Discovery of(DriverRun run, List<Variant> faults) {
         long[] ticksAt = new long[faults.size()];
         int[] candidatesAt = new int[faults.size()];
         Arrays.fill(ticksAt, NEVER);
@@ -48,7 +48,7 @@ public final class Discovery {
         return new Discovery(List.copyOf(faults), ticksAt, candidatesAt, run.spend().ticks());
     }
 
-    public List<Fault> faults() {
+    public List<Variant> faults() {
         return faults;
     }
 

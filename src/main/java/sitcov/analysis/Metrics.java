@@ -3,7 +3,7 @@ package sitcov.analysis;
 import java.util.List;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.Measure;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.FaultOutcome;
 import sitcov.judge.Notion;
 
@@ -44,7 +44,7 @@ public record Metrics(int maps, int cells, double methodPropFault, double propMa
         };
     }
 
-    public static Metrics of(List<MapRun> runs, List<Fault> faults, Notion notion) {
+    public static Metrics of(List<MapRun> runs, List<Variant> faults, Notion notion) {
         int n = runs.size();
         int k = faults.size();
         int[] found = new int[k];
@@ -54,7 +54,7 @@ public record Metrics(int maps, int cells, double methodPropFault, double propMa
             int onMap = 0;
             for (int f = 0; f < k; f++) {
                 FaultOutcome v = run.faults().get(f);
-                if (v.fault() != faults.get(f)) {
+                if (!v.variant().equals(faults.get(f))) {
                     throw new IllegalArgumentException("faults of map " + run.map().text() + " are not in fault order");
                 }
                 boolean hit = v.found(notion);

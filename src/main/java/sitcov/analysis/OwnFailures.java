@@ -11,8 +11,8 @@ import sitcov.oracle.AccidentType;
 import sitcov.stats.McNemar;
 
 /**
- * The reference car's own failures a test suite found: maps on which the fault-free car had an
- * accident (no seeded fault involved). Per driver: how many, per million simulated ticks (all the
+ * The reference's own failures a test suite found: maps on which the reference run had an accident or
+ * its controller failed (no variant involved). Per driver: how many, per million simulated ticks (all the
  * ticks it spent, faulty runs included, as every driver is charged), and how many distinct ones (a
  * cell × accident type counted once), in each replication and over all of them pooled. Each other
  * driver is compared with the reference driver (random, when there is one) by a sign test on the
@@ -21,7 +21,7 @@ import sitcov.stats.McNemar;
  */
 public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
     /** One map on which the fault-free car failed. */
-    public record Failure(int replication, String driver, int mapIndex, MapRun run, List<AccidentType> types) {
+    public record Failure(int replication, String driver, int mapIndex, MapRun run, List<sitcov.oracle.Failure> types) {
     }
 
     /**
@@ -44,7 +44,7 @@ public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
         for (ReplicationResult r : results) {
             for (String d : drivers) {
                 for (MapRun m : r.of(d).maps()) {
-                    List<AccidentType> types = types(m);
+                    List<sitcov.oracle.Failure> types = types(m);
                     if (!types.isEmpty()) {
                         all.add(new Failure(r.replication(), d, m.mapIndex(), m, types));
                     }
@@ -64,9 +64,9 @@ public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
                 Set<Long> here = new HashSet<>();
                 long found = 0;
                 for (MapRun m : run.maps()) {
-                    List<AccidentType> types = types(m);
-                    for (AccidentType t : types) {
-                        long key = (long) m.cell() * AccidentType.values().length + t.ordinal();
+                    List<sitcov.oracle.Failure> types = types(m);
+                    for (sitcov.oracle.Failure t : types) {
+                        long key = (long) m.cell() * sitcov.oracle.Failure.values().length + t.ordinal();
                         here.add(key);
                         pooled.add(key);
                     }
@@ -94,14 +94,15 @@ public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
         return ticks == 0 ? 0 : failures * 1e6 / ticks;
     }
 
-    /** The accident types of the map's fault-free run, in type order. */
-    static List<AccidentType> types(MapRun m) {
-        List<AccidentType> types = new ArrayList<>();
+    /** How the map's reference run failed: its accident types in type order, then its controller's failure if any. */
+    static List<sitcov.oracle.Failure> types(MapRun m) {
+        List<sitcov.oracle.Failure> types = new ArrayList<>();
         for (AccidentType t : AccidentType.values()) {
             if (m.faultFree().count(t) > 0) {
-                types.add(t);
+                types.add(sitcov.oracle.Failure.of(t));
             }
         }
+        sitcov.oracle.Failure.of(m.faultFree().outcome()).ifPresent(types::add);
         return types;
     }
 }

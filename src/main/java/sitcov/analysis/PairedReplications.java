@@ -7,7 +7,7 @@ import sitcov.experiment.DriverRun;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.Measure;
 import sitcov.experiment.ReplicationResult;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.Notion;
 
 /**
@@ -40,7 +40,7 @@ final class PairedReplications {
 
     static PairedReplications of(Summary summary, String a, String b, BudgetKind budget) {
         List<ReplicationResult> results = summary.results();
-        List<Fault> faults = summary.faults();
+        List<Variant> faults = summary.faults();
         PairedReplications pair = new PairedReplications(a, b, results.size(), faults.size());
         for (int r = 0; r < results.size(); r++) {
             DriverRun runA = results.get(r).of(a);
@@ -52,7 +52,7 @@ final class PairedReplications {
         return pair;
     }
 
-    private void record(int r, DriverRun run, long horizon, BudgetKind budget, List<Fault> faults, double[][] measures,
+    private void record(int r, DriverRun run, long horizon, BudgetKind budget, List<Variant> faults, double[][] measures,
                         long[][] found, long[] maps) {
         List<MapRun> compared = budget == BudgetKind.TICKS ? within(run.maps(), horizon) : run.maps();
         Metrics m = Metrics.of(compared, faults, Notion.DIFFERENTIAL);

@@ -9,7 +9,7 @@ import java.util.random.RandomGenerator;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.ReplicationResult;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.Notion;
 
 /**
@@ -24,10 +24,10 @@ import sitcov.judge.Notion;
  */
 public final class SituationFaults {
     /** One fault's test: maps and finds, η² by cell, the mean η² of random deals, and the permutation p-value. */
-    public record Uniformity(Fault fault, int maps, int found, double explained, double byChance, double p) {
+    public record Uniformity(Variant variant, int maps, int found, double explained, double byChance, double p) {
     }
 
-    private final List<Fault> faults;
+    private final List<Variant> faults;
     private final int[] cellOf;
     private final boolean[][] found;
     private final Map<Integer, int[]> matrix = new TreeMap<>();
@@ -35,7 +35,7 @@ public final class SituationFaults {
     /** The cells seen, ascending: a cell's place here indexes the per-cell counts. */
     private final int[] dense;
 
-    private SituationFaults(List<Fault> faults, int[] cellOf, boolean[][] found) {
+    private SituationFaults(List<Variant> faults, int[] cellOf, boolean[][] found) {
         this.faults = faults;
         this.cellOf = cellOf;
         this.found = found;
@@ -50,7 +50,7 @@ public final class SituationFaults {
     }
 
     /** The distinct maps with a valid cell among the results, in the order first run. */
-    public static SituationFaults of(List<ReplicationResult> results, List<Fault> faults) {
+    public static SituationFaults of(List<ReplicationResult> results, List<Variant> faults) {
         Map<String, MapRun> distinct = new LinkedHashMap<>();
         for (ReplicationResult r : results) {
             for (DriverRun d : r.drivers()) {
@@ -73,7 +73,7 @@ public final class SituationFaults {
         return new SituationFaults(List.copyOf(faults), cells, found);
     }
 
-    public List<Fault> faults() {
+    public List<Variant> faults() {
         return faults;
     }
 

@@ -9,7 +9,7 @@ import sitcov.experiment.DriverRun;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.ReplicationResult;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.Notion;
 
 /**
@@ -31,7 +31,7 @@ public final class Summary {
         }
     }
 
-    private final List<Fault> faults;
+    private final List<Variant> faults;
     private final List<String> drivers;
     private final List<ReplicationResult> results;
     /** The metrics of each replication, driver and notion. */
@@ -41,7 +41,7 @@ public final class Summary {
     }
 
     public Summary(ExperimentConfig config, List<ReplicationResult> results) {
-        this.faults = config.faultList();
+        this.faults = config.variants();
         this.drivers = config.drivers();
         this.results = List.copyOf(results);
         for (ReplicationResult r : results) {
@@ -53,7 +53,7 @@ public final class Summary {
         }
     }
 
-    public List<Fault> faults() {
+    public List<Variant> faults() {
         return faults;
     }
 

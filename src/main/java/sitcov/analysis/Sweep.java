@@ -24,7 +24,7 @@ public final class Sweep {
     /** The points of a sweep's results, in plan order, drivers in the preset's order within a set. */
     public static List<Point> points(ExperimentConfig config, Summary summary) {
         List<PlannedReplication> plan = config.plan();
-        int k = config.faultList().size();
+        int k = config.variants().size();
         List<Point> points = new ArrayList<>();
         for (ReplicationResult r : summary.results()) {
             PlannedReplication p = plan.get(r.replication());

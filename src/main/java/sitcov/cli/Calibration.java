@@ -30,11 +30,16 @@ final class Calibration {
     private final Map<AccidentType, Integer> runsWith = new EnumMap<>(AccidentType.class);
     private final List<Long> accidentSeeds = new ArrayList<>();
     private final List<Long> timeoutSeeds = new ArrayList<>();
+    private final Map<Outcome, Integer> controllerFailed = new EnumMap<>(Outcome.class);
+    private final List<Long> controllerSeeds = new ArrayList<>();
+    private final String controller;
 
-    Calibration(long firstSeed, int maps, boolean summaryOnly) {
+    /** The calibration of {@code controller} ({@code builtin}, or as {@code --controller} named it). */
+    Calibration(long firstSeed, int maps, boolean summaryOnly, String controller) {
         this.firstSeed = firstSeed;
         this.maps = maps;
         this.summaryOnly = summaryOnly;
+        this.controller = controller;
         for (AccidentType t : AccidentType.values()) {
             events.put(t, 0L);
             runsWith.put(t, 0);
@@ -59,6 +64,12 @@ final class Calibration {
                 accidentSeeds.add(r.externalSeed());
             }
         }
+        if (r.controllerFailure().isPresent()) {
+            controllerFailed.merge(r.outcome(), 1, Integer::sum);
+            if (controllerSeeds.size() < SEEDS_LISTED) {
+                controllerSeeds.add(r.externalSeed());
+            }
+        }
         excused += r.excusedContacts().values().stream().mapToInt(Integer::intValue).sum();
         for (Map.Entry<AccidentType, Long> e : r.countsByType().entrySet()) {
             if (e.getValue() > 0) {
@@ -75,6 +86,15 @@ final class Calibration {
         row(out, "reached the Target", reached, "target: at least 99%");
         row(out, "any accident (incl. TIMEOUT)", withAccident, "target: at most 1%");
         row(out, "any accident besides TIMEOUT", withAccidentBesidesTimeout, "");
+        // a controller that fails gives no accident and no arrival: its runs are counted here, not lost
+        int failed = controllerFailed.values().stream().mapToInt(Integer::intValue).sum();
+        if (failed > 0) {
+            row(out, "controller failed", failed, "");
+            for (Map.Entry<Outcome, Integer> e : controllerFailed.entrySet()) {
+                row(out, "  " + e.getKey(), e.getValue(), "");
+            }
+            row(out, "any failure (accident or controller)", withAccident + failed, "");
+        }
         out.printf(Locale.ROOT, "  %-30s %8.1f%n", "mean ticks", runs == 0 ? 0.0 : (double) ticks / runs);
         out.printf(Locale.ROOT, "  %-30s %6d %6.3f a run   (target: at most 0.01)%n", "excused contacts (events)",
                 excused, runs == 0 ? 0.0 : (double) excused / runs);
@@ -85,8 +105,10 @@ final class Calibration {
         }
         out.println();
         listSeeds(out, "Seeds with an accident besides TIMEOUT", accidentSeeds, withAccidentBesidesTimeout);
-        listSeeds(out, "Seeds that timed out", timeoutSeeds, runs - reached);
-        String args = "simulate --maps " + maps + " --seed " + firstSeed + (summaryOnly ? " --summary" : "");
+        listSeeds(out, "Seeds that timed out", timeoutSeeds, runs - reached - failed);
+        listSeeds(out, "Seeds where the controller failed", controllerSeeds, failed);
+        String args = "simulate --maps " + maps + " --seed " + firstSeed + (summaryOnly ? " --summary" : "")
+                + (controller.equals("builtin") ? "" : " --controller '" + controller + "'");
         out.println("Reproduce: " + Main.PROGRAM + " " + args);
         out.println("       or: mvn -q compile exec:java -Dexec.args=\"" + args + "\"");
     }

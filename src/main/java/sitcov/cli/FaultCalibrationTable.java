@@ -57,8 +57,8 @@ final class FaultCalibrationTable {
         Map<AccidentType, Integer> by = new EnumMap<>(AccidentType.class);
         for (JudgedMap m : results) {
             FaultVerdict v = m.verdicts().get(column);
-            reached += v.activation().reached() ? 1 : 0;
-            effective += v.activation().effective() ? 1 : 0;
+            reached += v.reached() ? 1 : 0;
+            effective += v.effective() ? 1 : 0;
             paper += v.foundByPaperNotion() ? 1 : 0;
             if (v.detection().found()) {
                 found++;

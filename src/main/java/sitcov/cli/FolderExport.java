@@ -80,9 +80,9 @@ final class FolderExport {
         List<ResultsRows.Row> rows = ResultsRows.all(folder);
         if (only.isPresent() && !rows.isEmpty()) {
             for (Fault f : only.get()) {
-                if (!rows.get(0).config().faultList().contains(f)) {
+                if (!rows.get(0).config().faults().contains(f)) {
                     throw new UsageException("export: the experiment in " + folder + " did not seed fault " + f.id()
-                            + "; its faults are " + rows.get(0).config().faultList().stream().map(Fault::id).toList()
+                            + "; its faults are " + rows.get(0).config().faults().stream().map(Fault::id).sorted().toList()
                             + ".");
                 }
             }
@@ -132,7 +132,7 @@ final class FolderExport {
         Accident a = verdict.newAccident().orElseThrow();
         return String.join(",", List.of(Integer.toString(row.number()), Integer.toString(row.map().replication()),
                 row.map().driver(), Integer.toString(row.map().mapIndex()), Long.toString(row.map().externalSeed()),
-                Long.toString(row.map().internalSeed()), Integer.toString(verdict.fault().id()), a.type().name(),
+                Long.toString(row.map().internalSeed()), Integer.toString(verdict.variant().id()), a.type().name(),
                 Long.toString(a.tick()), String.format(java.util.Locale.ROOT, "%.1f", AsamFrame.seconds(a.tick())),
                 String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.x(a.x())),
                 String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.y(a.y())), base + ".xodr", base + ".xosc",

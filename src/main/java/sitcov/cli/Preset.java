@@ -17,6 +17,8 @@ import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.faults.FaultSet;
 import sitcov.judge.FaultyRuns;
+import sitcov.judge.Variant;
+import sitcov.judge.VariantList;
 import sitcov.results.IoReason;
 
 /**
@@ -34,7 +36,7 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
     private static Set<String> keys() {
         Set<String> keys = new java.util.TreeSet<>(List.of("name", "master_seed", "candidates", "replications", "faults",
                 "budget", "faulty_runs", "grid", "description", "sweep", "drivers", "candidate_limit", "controller",
-                "protocol", "trials", "tick_budget"));
+                "protocol", "trials", "tick_budget", "variants"));
         keys.addAll(AnalysisPlan.keys());
         return Set.copyOf(keys);
     }
@@ -53,12 +55,15 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
     }
 
     static Preset read(Path file, Long masterSeedOverride, Drivers drivers) throws UsageException {
-        return read(file, masterSeedOverride, null, drivers);
+        return read(file, masterSeedOverride, null, java.util.Map.of(), drivers);
     }
 
-    /** The preset, with its master seed and number of replications replaced where an override is given. */
-    static Preset read(Path file, Long masterSeedOverride, Integer replicationsOverride, Drivers drivers)
-            throws UsageException {
+    /**
+     * The preset, with its master seed and number of replications replaced where an override is given,
+     * and its keys {@code keys} (from the command line: {@code controller}, {@code variants}) replacing its own.
+     */
+    static Preset read(Path file, Long masterSeedOverride, Integer replicationsOverride, java.util.Map<String, String> keys,
+                       Drivers drivers) throws UsageException {
         Properties p = new Properties();
         String text;
         try {
@@ -73,6 +78,10 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
             throw new UsageException("run: cannot read the preset " + file + ": " + e.getMessage() + ".");
         }
         duplicateKeys(text, file);
+        if (keys.containsKey("variants")) {
+            p.remove("faults"); // the variants given replace the preset's, whichever key named them
+        }
+        keys.forEach(p::setProperty);
         String protocol = p.getProperty("protocol", "suites").strip();
         if (protocol.equals("campaign")) {
             if (replicationsOverride != null) {
@@ -170,12 +179,8 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
             int candidates = count(file, "candidates", required(p, "candidates", file), ExperimentConfig.MAX_CANDIDATES);
             int replications = count(file, "replications", p.getProperty("replications", "1"),
                     ExperimentConfig.MAX_REPLICATIONS);
-            field = "faults";
-            var faults = FaultSet.parse(p.getProperty("faults", "PAPER"));
-            if (faults.isEmpty()) {
-                throw new UsageException("run: " + file + ": faults=" + p.getProperty("faults").strip() + " leaves no fault"
-                        + " to find; name at least one, e.g. faults=PAPER.");
-            }
+            String controller = Controllers.check(p.getProperty("controller", ExperimentConfig.BUILTIN).strip());
+            List<Variant> variants = variants(p, file, controller);
             field = "budget";
             BudgetKind budget = BudgetKind.ofKey(p.getProperty("budget", "ticks").strip());
             field = "drivers";
@@ -191,9 +196,7 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
             GridDefinition grid = gridFile == null ? GridDefinition.paper() : GridDefinition.read(Path.of(gridFile.strip()));
             field = "analysis";
             AnalysisPlan analysis = AnalysisPlan.read(p::getProperty, drivers);
-            field = "controller";
-            String controller = Controllers.check(p.getProperty("controller", ExperimentConfig.BUILTIN).strip());
-            return new ExperimentConfig(name, seed, candidates, replications, faults, budget, grid, drivers, sweep,
+            return new ExperimentConfig(name, seed, candidates, replications, variants, budget, grid, drivers, sweep,
                     candidateLimit, faultyRuns, analysis, controller);
         } catch (IOException e) {
             throw new UsageException("run: " + file + ": cannot read its grid: " + sitcov.results.IoReason.of(e) + ".");
@@ -203,6 +206,35 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
         } catch (IllegalArgumentException e) {
             throw new UsageException("run: " + file + ": " + e.getMessage() + ".");
         }
+    }
+
+    /**
+     * The reference's variants: {@code variants=} as given, or {@code faults=} (the builtin car's seeded
+     * faults, one variant each); without either, a builtin reference's {@code PAPER} faults and no
+     * variants for any other reference.
+     */
+    private static List<Variant> variants(Properties p, Path file, String controller) throws UsageException {
+        if (p.containsKey("variants") && p.containsKey("faults")) {
+            throw new UsageException("run: " + file + ": give the variants once: variants= lists them all (builtin:F for"
+                    + " a seeded fault), faults= is its shorthand for the builtin car's; remove one of them.");
+        }
+        if (p.containsKey("variants")) {
+            try {
+                return VariantList.parse(p.getProperty("variants"));
+            } catch (IllegalArgumentException e) {
+                throw new UsageException("run: " + file + ": variants: " + e.getMessage() + ".");
+            }
+        }
+        if (!p.containsKey("faults") && !controller.equals(ExperimentConfig.BUILTIN)) {
+            return List.of();
+        }
+        var faults = FaultSet.parse(p.getProperty("faults", "PAPER"));
+        if (faults.isEmpty()) {
+            throw new UsageException("run: " + file + ": faults=" + p.getProperty("faults").strip() + " leaves no fault"
+                    + " to find; name at least one, e.g. faults=PAPER, or variants=none to seek the reference's own"
+                    + " failures.");
+        }
+        return ExperimentConfig.seeded(faults);
     }
 
     /** Properties keep the last of two lines with one key; a preset with a key twice is more likely a mistake. */

@@ -58,7 +58,7 @@ final class RecordedRows {
             FaultOutcome was = row.outcome().get();
             FaultOutcome now = FaultOutcome.of(judged.verdicts().get(0));
             if (!was.equals(now)) {
-                return Optional.of("fault " + was.fault().id() + " was recorded as " + words(was) + ", it now gives "
+                return Optional.of("fault " + was.variant().id() + " was recorded as " + words(was) + ", it now gives "
                         + words(now));
             }
         }

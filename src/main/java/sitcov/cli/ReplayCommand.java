@@ -166,7 +166,7 @@ final class ReplayCommand implements Command {
                 }
                 row = ResultsRows.find(folder, options.count("--replication", 0, Integer.MAX_VALUE).orElseThrow(),
                         options.value("--driver").orElseThrow(), options.count("--map", 0, Integer.MAX_VALUE).orElseThrow(),
-                        oneFault(options, false));
+                        oneFault(options, false).map(Fault::id));
             }
             RecordedRows.refuseOtherController("replay", folder, row);
             return new Case(ResultsRows.worldMap(folder, row.map()), row.map().internalSeed(), row.fault(),

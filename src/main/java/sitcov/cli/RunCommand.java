@@ -12,6 +12,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.stream.Stream;
 import sitcov.drivers.Drivers;
+import sitcov.analysis.ControllerFailures;
 import sitcov.control.ControllerSource;
 import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.ExperimentConfig;
@@ -58,7 +59,7 @@ final class RunCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--out", "--seed", "--replications", "--threads", "--fork", "--shard",
-                "--resume", "--controller"), Set.of("--dry-run"));
+                "--resume", "--controller", "--variants"), Set.of("--dry-run"));
         int threads = options.threads(err);
         fork = options.forks();
         if (options.value("--resume").isPresent()) {
@@ -71,15 +72,15 @@ final class RunCommand implements Command {
             throw new UsageException("run: name one preset, e.g. 'run smoke' or 'run experiments/paper-rq1.properties',"
                     + " or resume a folder with 'run --resume DIR'.");
         }
+        Map<String, String> keys = new java.util.HashMap<>();
+        options.value("--controller").ifPresent(c -> keys.put("controller", c));
+        options.value("--variants").ifPresent(v -> keys.put("variants", v));
         Preset preset = Preset.read(Preset.locate(options.positional().get(0)), options.seed("--seed").orElse(null),
-                options.count("--replications", 1, ExperimentConfig.MAX_REPLICATIONS).orElse(null), drivers);
+                options.count("--replications", 1, ExperimentConfig.MAX_REPLICATIONS).orElse(null), keys, drivers);
         if (preset.campaign() != null) {
             return campaign(preset.campaign(), options, threads, out, err);
         }
         ExperimentConfig config = preset.config();
-        if (options.value("--controller").isPresent()) {
-            config = config.withController(Controllers.check(options.value("--controller").get()));
-        }
         Shard shard = shard(options, config);
         if (options.has("--dry-run")) {
             if (options.has("--out")) {
@@ -93,7 +94,7 @@ final class RunCommand implements Command {
         Path folder = folder(options, config, shard);
         Manifest manifest = new Manifest(config, Version.current(), shard, false, false);
         // a controller program that cannot start is refused before a results folder is made for it
-        ControllerSource controllers = Controllers.open(config.controller(), folder);
+        Controllers.Opened controllers = Controllers.open(config, folder);
         Map<String, String> execution = execution(threads);
         execution.put("preset_file", preset.file().toString());
         ResultsRecorder recorder;
@@ -171,7 +172,7 @@ final class RunCommand implements Command {
             if (!manifest.checked()) {
                 err.println("sitcov: run: " + Manifest.uncheckedWarning(folder) + ".");
             }
-            ControllerSource controllers = Controllers.open(manifest.config().controller(), folder);
+            Controllers.Opened controllers = Controllers.open(manifest.config(), folder);
             ResultsRecorder recorder;
             try {
                 recorder = ResultsRecorder.resume(folder, manifest, execution(threads), System::nanoTime);
@@ -188,14 +189,15 @@ final class RunCommand implements Command {
         }
     }
 
-    private int execute(ResultsRecorder recorder, ControllerSource controllers, Path folder, int threads, String note,
+    private int execute(ResultsRecorder recorder, Controllers.Opened opened, Path folder, int threads, String note,
                         PrintStream out, PrintStream err) {
+        Controllers.Opened controllers = fork ? opened : opened.unforked();
         Manifest manifest = recorder.manifest();
         ExperimentConfig config = manifest.config();
         ProgressListener progress = new ProgressListener(err, err == System.err && System.console() != null,
                 System::nanoTime);
         ExperimentRunner runner = new ExperimentRunner(config, drivers, manifest.shard(), recorder.journal(), threads,
-                System::nanoTime, List.of(recorder, progress), fork ? controllers : controllers.unforked());
+                System::nanoTime, List.of(recorder, progress), controllers.reference(), controllers.variants());
         err.println(plan(runner, config, manifest.shard(), threads) + ", into " + folder + note);
         try (controllers) {
             runner.run();
@@ -217,6 +219,11 @@ final class RunCommand implements Command {
         SummaryTable.print(out, config, recorder.summary());
         VerdictPrinter.print(out, folder);
         out.println("Results in " + folder + " (" + progress.elapsed() + " on " + threads + " threads)");
+        if (ControllerFailures.of(recorder.summary().results(), config.variants()).referenceAlwaysFailed()) {
+            err.println("sitcov: run: the reference controller " + config.controller() + " failed on every map (see the"
+                    + " verdict and controller-N.log in " + folder + ").");
+            return ExitCode.FAILURE;
+        }
         return ExitCode.OK;
     }
 

@@ -192,7 +192,7 @@ final class SimulateCommand implements Command {
         int maps = options.count("--maps", 1, MAX_MAPS).orElseThrow();
         long first = options.firstSeed("--seed", maps);
         boolean perRun = !options.has("--summary");
-        Calibration calibration = new Calibration(first, maps, !perRun);
+        Calibration calibration = new Calibration(first, maps, !perRun, options.value("--controller").orElse("builtin"));
         RunGallery gallery = null;
         if (options.value("--gallery").isPresent()) {
             Path folder = Path.of(options.value("--gallery").get());

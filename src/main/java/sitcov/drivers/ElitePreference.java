@@ -1,11 +1,10 @@
 package sitcov.drivers;
 
-import java.util.EnumMap;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import sitcov.experiment.MapRun;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.FaultOutcome;
 import sitcov.judge.Notion;
 
@@ -50,12 +49,12 @@ interface ElitePreference {
      */
     final class RareFaults implements ElitePreference {
         static final double RARITY = 10;
-        private final Map<Fault, Integer> finds = new EnumMap<>(Fault.class);
-        private final Map<Integer, List<Fault>> foundIn = new HashMap<>();
+        private final Map<Variant, Integer> finds = new HashMap<>();
+        private final Map<Integer, List<Variant>> foundIn = new HashMap<>();
 
         @Override
         public void ran(int cell, MapRun run) {
-            List<Fault> found = run.faults().stream().filter(f -> f.found(Notion.DIFFERENTIAL)).map(FaultOutcome::fault).toList();
+            List<Variant> found = run.faults().stream().filter(f -> f.found(Notion.DIFFERENTIAL)).map(FaultOutcome::variant).toList();
             foundIn.put(cell, found);
             found.forEach(f -> finds.merge(f, 1, Integer::sum));
         }
@@ -63,7 +62,7 @@ interface ElitePreference {
         @Override
         public double weight(int cell) {
             double w = 1;
-            for (Fault f : foundIn.getOrDefault(cell, List.of())) {
+            for (Variant f : foundIn.getOrDefault(cell, List.of())) {
                 w += RARITY / finds.get(f);
             }
             return w;

@@ -45,7 +45,7 @@ public record CampaignConfig(String name, long masterSeed, List<Fault> faults, L
             throw new IllegalArgumentException("fault " + fault.id() + " is not one of the campaign's");
         }
         return new ExperimentConfig(name + "-" + folderOf(fault), SeedPlan.campaignSeed(masterSeed, fault.id()),
-                candidateLimit, trials, Set.of(fault), BudgetKind.FIXED_TICKS, grid, drivers, List.of(), candidateLimit,
+                candidateLimit, trials, ExperimentConfig.seeded(Set.of(fault)), BudgetKind.FIXED_TICKS, grid, drivers, List.of(), candidateLimit,
                 faultyRuns, AnalysisPlan.defaults(drivers), controller, tickBudget);
     }
 

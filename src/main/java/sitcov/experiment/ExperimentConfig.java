@@ -8,6 +8,7 @@ import java.util.Set;
 import sitcov.coverage.GridDefinition;
 import sitcov.faults.Fault;
 import sitcov.judge.FaultyRuns;
+import sitcov.judge.Variant;
 
 /**
  * One experiment. A comparison: per replication, the first of {@code drivers} draws
@@ -18,7 +19,7 @@ import sitcov.judge.FaultyRuns;
  * (budget {@code fixed-ticks}): every driver gets {@code tickBudget} ticks per replication (0 for
  * every other budget), with {@code candidates} only its safety limit.
  */
-public record ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
+public record ExperimentConfig(String name, long masterSeed, int candidates, int replications, List<Variant> variants,
                                BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
                                int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis, String controller,
                                long tickBudget) {
@@ -71,20 +72,23 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
             throw new IllegalArgumentException("a tick budget goes with the fixed-ticks budget of a campaign, and only"
                     + " with it (got budget " + budget.key() + ", tick budget " + tickBudget + ")");
         }
-        if (budget == BudgetKind.FIXED_TICKS && (faults.size() != 1 || !sweep.isEmpty())) {
-            throw new IllegalArgumentException("a campaign's trials falsify one fault and sweep nothing, got faults "
-                    + faults + " and sweep " + sweep);
+        if (budget == BudgetKind.FIXED_TICKS && (variants.size() != 1 || !sweep.isEmpty())) {
+            throw new IllegalArgumentException("a campaign's trials falsify one variant and sweep nothing, got "
+                    + variants.size() + " variants and sweep " + sweep);
         }
-        faults = Set.copyOf(faults);
+        variants = List.copyOf(variants);
+        if (variants.stream().map(Variant::id).distinct().count() != variants.size()) {
+            throw new IllegalArgumentException("an experiment's variants have distinct ids, got " + variants);
+        }
         drivers = List.copyOf(drivers);
         sweep = List.copyOf(sweep);
     }
 
     /** Any budget but a campaign's fixed ticks. */
-    public ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
+    public ExperimentConfig(String name, long masterSeed, int candidates, int replications, List<Variant> variants,
                             BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
                             int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis, String controller) {
-        this(name, masterSeed, candidates, replications, faults, budget, grid, drivers, sweep, candidateLimit, faultyRuns,
+        this(name, masterSeed, candidates, replications, variants, budget, grid, drivers, sweep, candidateLimit, faultyRuns,
                 analysis, controller, 0);
     }
 
@@ -92,14 +96,20 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
     public ExperimentConfig(String name, long masterSeed, int candidates, int replications, Set<Fault> faults,
                             BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
                             int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis) {
-        this(name, masterSeed, candidates, replications, faults, budget, grid, drivers, sweep, candidateLimit, faultyRuns,
-                analysis, BUILTIN);
+        this(name, masterSeed, candidates, replications, seeded(faults), budget, grid, drivers, sweep, candidateLimit,
+                faultyRuns, analysis, BUILTIN);
     }
 
     /** The same experiment testing the controller {@code spec} names ({@code builtin} or {@code exec:COMMAND ARGS…}). */
     public ExperimentConfig withController(String spec) {
-        return new ExperimentConfig(name, masterSeed, candidates, replications, faults, budget, grid, drivers, sweep,
+        return new ExperimentConfig(name, masterSeed, candidates, replications, variants, budget, grid, drivers, sweep,
                 candidateLimit, faultyRuns, analysis, spec, tickBudget);
+    }
+
+    /** The same experiment judging {@code others} as the reference's variants. */
+    public ExperimentConfig withVariants(List<Variant> others) {
+        return new ExperimentConfig(name, masterSeed, candidates, replications, others, budget, grid, drivers, sweep,
+                candidateLimit, faultyRuns, analysis, controller, tickBudget);
     }
 
     /** The default analysis: distinct faults found, the first driver against the second, default margins. */
@@ -123,9 +133,20 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
         return (int) Math.min(Integer.MAX_VALUE, largest * 10L);
     }
 
-    /** The faults of the set in id order: the order of every per-fault column. */
-    public List<Fault> faultList() {
-        return List.copyOf(faults.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(faults));
+    /** The builtin car's seeded faults, each a variant, in id order: the order of every per-fault column. */
+    public static List<Variant> seeded(Set<Fault> faults) {
+        return (faults.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(faults)).stream()
+                .<Variant>map(Variant.Seeded::new).toList();
+    }
+
+    /** The seeded faults among the variants (all of them, for an experiment on the builtin car's faults). */
+    public Set<Fault> faults() {
+        return Set.copyOf(Variant.faultsOf(variants));
+    }
+
+    /** Whether every variant is a seeded fault of the builtin car (the folder then names them by {@code faults=}). */
+    public boolean onlySeeded() {
+        return variants.stream().allMatch(v -> v instanceof Variant.Seeded);
     }
 
     public boolean isSweep() {

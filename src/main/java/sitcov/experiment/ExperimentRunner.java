@@ -9,8 +9,9 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
+import sitcov.control.ControllerFactory;
 import sitcov.control.ControllerSource;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.vehicles.BuiltinCar;
 
 /**
@@ -27,8 +28,9 @@ public final class ExperimentRunner {
     private final int threads;
     private final LongSupplier nanoClock;
     private final List<ExperimentListener> listeners;
-    private final List<Fault> faults;
+    private final List<Variant> variants;
     private final ControllerSource controllers;
+    private final java.util.Map<Integer, ControllerSource> variantControllers;
     private volatile boolean halted;
 
     /** A runner of an experiment on the builtin car. */
@@ -37,9 +39,20 @@ public final class ExperimentRunner {
         this(config, drivers, shard, journal, threads, nanoClock, listeners, BuiltinCar.SOURCE);
     }
 
-    /** A runner whose worker threads take their controllers from {@code controllers} (which the caller closes). */
+    /** A runner whose worker threads take the reference's controllers from {@code controllers} (which the caller closes). */
     public ExperimentRunner(ExperimentConfig config, DriverFactory drivers, Shard shard, Journal journal, int threads,
                             LongSupplier nanoClock, List<ExperimentListener> listeners, ControllerSource controllers) {
+        this(config, drivers, shard, journal, threads, nanoClock, listeners, controllers, java.util.Map.of());
+    }
+
+    /**
+     * A runner whose worker threads take the reference's controllers from {@code controllers} and those of
+     * each variant that is a controller of its own from {@code variantControllers}, by variant id (the caller
+     * closes them all).
+     */
+    public ExperimentRunner(ExperimentConfig config, DriverFactory drivers, Shard shard, Journal journal, int threads,
+                            LongSupplier nanoClock, List<ExperimentListener> listeners, ControllerSource controllers,
+                            java.util.Map<Integer, ControllerSource> variantControllers) {
         for (String d : config.drivers()) {
             drivers.create(d);
         }
@@ -50,8 +63,9 @@ public final class ExperimentRunner {
         this.threads = Math.max(1, threads);
         this.nanoClock = nanoClock;
         this.listeners = List.copyOf(listeners);
-        this.faults = config.faultList();
+        this.variants = config.variants();
         this.controllers = controllers;
+        this.variantControllers = java.util.Map.copyOf(variantControllers);
     }
 
     /** Where each worker thread gets its controller. */
@@ -154,8 +168,17 @@ public final class ExperimentRunner {
         return config;
     }
 
-    List<Fault> faults() {
-        return faults;
+    /** This worker thread's controller of a variant that is a controller of its own. */
+    ControllerFactory variantController(Variant.Controller variant) {
+        ControllerSource source = variantControllers.get(variant.id());
+        if (source == null) {
+            throw new IllegalStateException("no controller was started for variant " + variant.id() + " (" + variant.spec() + ")");
+        }
+        return source.forThisThread();
+    }
+
+    List<Variant> variants() {
+        return variants;
     }
 
     long nanoTime() {

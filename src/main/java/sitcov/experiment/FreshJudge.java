@@ -39,8 +39,8 @@ final class FreshJudge implements SessionJudge {
             judged = judgedBefore.judged();
         } else {
             world = r.map().get();
-            judged = MapRunner.judge(world, internal, host.faults(), host.config().faultyRuns(),
-                    host.controllers().forThisThread());
+            judged = MapRunner.judgeVariants(world, internal, host.variants(), host.config().faultyRuns(),
+                    host.controllers().forThisThread(), host::variantController);
         }
         List<Double> values = new ArrayList<>(r.criteria().length);
         for (double v : r.criteria()) {

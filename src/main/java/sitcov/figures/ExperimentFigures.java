@@ -39,7 +39,7 @@ public final class ExperimentFigures {
     }
 
     static BufferedImage faultsPerMap(ExperimentConfig config, Summary summary) {
-        int k = config.faults().size();
+        int k = config.variants().size();
         List<String> drivers = config.drivers();
         int n = drivers.size();
         BufferedImage image = canvas(1000, 440);

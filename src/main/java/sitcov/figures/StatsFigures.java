@@ -125,7 +125,7 @@ public final class StatsFigures {
             boolean differs = FaultFindings.differs(t.finding());
             g.setColor(Color.BLACK);
             g.setFont(new Font(Font.SANS_SERIF, differs ? Font.BOLD : Font.PLAIN, 12));
-            g.drawString(String.format(Locale.ROOT, "fault %2d  %d/%d vs %d/%d", t.fault().id(), t.foundA(), t.mapsA(),
+            g.drawString(String.format(Locale.ROOT, "fault %2d  %d/%d vs %d/%d", t.variant().id(), t.foundA(), t.mapsA(),
                     t.foundB(), t.mapsB()), 20, y + 4);
             g.drawString(t.finding().tested() ? "Holm p " + VerdictText.p(t.paired().pAdjusted())
                     : t.finding() == Finding.TOO_FEW ? "too few differ" : "not testable",

@@ -176,7 +176,8 @@ public final class LiveRun {
     /** How the run went so far (all of it, once {@link #step} returned false). */
     public RunRecord record() {
         RunResult result = new RunResult(map.seed(), internalSeed, detector.outcome(), detector.accidents(),
-                detector.excusedContacts(), detector.ticks(), Margins.of(nearMisses));
+                detector.excusedContacts(), detector.ticks(), Margins.of(nearMisses),
+                scene.telemetry().failure() == null ? "" : java.util.Objects.toString(scene.telemetry().failure().getMessage(), ""));
         return new RunRecord(result, faults, switchboard.activations());
     }
 }

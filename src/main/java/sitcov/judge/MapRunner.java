@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Set;
+import java.util.function.Function;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
@@ -44,6 +45,38 @@ public final class MapRunner {
             verdicts.add(DifferentialOracle.judge(faultFree, faulty, fault));
         }
         return new JudgedMap(faultFree, verdicts);
+    }
+
+    /**
+     * Judges every variant of {@code variants}, in the list's order, against the reference runs of
+     * {@code reference}: a seeded fault as above (forked where it departs when it can be), another
+     * controller ({@code controllers} makes it for this thread) run whole, its effect the ticks its
+     * commands differ from the reference's.
+     */
+    public static JudgedMap judgeVariants(WorldMap map, long internalSeed, List<Variant> variants, FaultyRuns length,
+                                          ControllerFactory reference,
+                                          Function<Variant.Controller, ControllerFactory> controllers) {
+        List<Fault> seeded = Variant.faultsOf(variants);
+        if (seeded.size() == variants.size()) {
+            return judge(map, internalSeed, seeded, length, reference);
+        }
+        CommandTrace trace = new CommandTrace();
+        RunResult base = Simulator.run(map, internalSeed, Set.of(), trace, reference).result();
+        List<FaultVerdict> verdicts = new ArrayList<>(variants.size());
+        for (Variant v : variants) {
+            VerdictWatch watch = length == FaultyRuns.UNTIL_VERDICT ? new VerdictWatch(base) : null;
+            if (v instanceof Variant.Seeded s) {
+                RunRecord faulty = Simulator.drive(new LiveRun(map, internalSeed, EnumSet.of(s.fault()), reference)
+                        .judged(), RunObserver.NONE, watch);
+                verdicts.add(DifferentialOracle.judge(base, faulty, s.fault()));
+            } else if (v instanceof Variant.Controller c) {
+                CommandTrace.Comparison differs = trace.comparison();
+                RunResult run = Simulator.drive(new LiveRun(map, internalSeed, Set.of(), controllers.apply(c)).judged(),
+                        differs, watch).result();
+                verdicts.add(DifferentialOracle.judge(base, run, c, true, differs.differing(), differs.first()));
+            }
+        }
+        return new JudgedMap(base, verdicts);
     }
 
     /**

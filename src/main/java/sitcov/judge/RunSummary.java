@@ -9,10 +9,11 @@ import sitcov.oracle.RunResult;
 
 /**
  * What an experiment keeps of one simulated run: how it ended, its ticks, its accident events by
- * type, and how close it came to each accident.
+ * type, how close it came to each accident, and why its controller failed if it did (else empty).
  */
-public record RunSummary(Outcome outcome, long ticks, List<Long> accidents, Margins margins) {
+public record RunSummary(Outcome outcome, long ticks, List<Long> accidents, Margins margins, String failureReason) {
     public RunSummary {
+        Objects.requireNonNull(failureReason, "failureReason");
         accidents = List.copyOf(accidents);
         if (accidents.size() != AccidentType.values().length) {
             throw new IllegalArgumentException("a run summary counts each of the " + AccidentType.values().length
@@ -21,13 +22,19 @@ public record RunSummary(Outcome outcome, long ticks, List<Long> accidents, Marg
         Objects.requireNonNull(margins, "margins");
     }
 
+    /** A summary of a run whose controller did not fail, or whose reason was not kept. */
+    public RunSummary(Outcome outcome, long ticks, List<Long> accidents, Margins margins) {
+        this(outcome, ticks, accidents, margins, "");
+    }
+
     /** A summary whose margins were not measured. */
     public RunSummary(Outcome outcome, long ticks, List<Long> accidents) {
         this(outcome, ticks, accidents, Margins.UNKNOWN);
     }
 
     public static RunSummary of(RunResult r) {
-        return new RunSummary(r.outcome(), r.ticks(), List.copyOf(r.countsByType().values()), r.margins());
+        return new RunSummary(r.outcome(), r.ticks(), List.copyOf(r.countsByType().values()), r.margins(),
+                r.failureReason());
     }
 
     public long count(AccidentType type) {

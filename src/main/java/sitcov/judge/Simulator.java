@@ -51,7 +51,7 @@ public final class Simulator {
     static RunRecord drive(LiveRun run, RunObserver observer, VerdictWatch watch) {
         while (run.step()) {
             observer.afterTick(run.tick(), run.telemetry(), run.detector());
-            if (watch != null && watch.settled(run.detector())) {
+            if (watch != null && watch.settled(run.detector(), run.tick())) {
                 run.detector().stopAtVerdict(run.state());
             }
         }

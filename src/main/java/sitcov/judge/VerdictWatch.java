@@ -14,14 +14,23 @@ import sitcov.oracle.RunResult;
  */
 final class VerdictWatch {
     private final List<Accident> unmatched;
+    /** Where the reference's controller failed, its run ended: nothing after can be compared. */
+    private final long horizon;
     private int seen;
 
     VerdictWatch(RunResult faultFree) {
         this.unmatched = new ArrayList<>(faultFree.accidents());
+        this.horizon = faultFree.controllerFailure().isPresent() ? faultFree.ticks() : Long.MAX_VALUE;
     }
 
-    /** Whether the run's accidents so far include one the fault-free run lacks. */
-    boolean settled(AccidentDetector detector) {
+    /**
+     * Whether the run's accidents up to {@code tick} include one the fault-free run lacks, or the run
+     * reached the tick where the reference's controller failed.
+     */
+    boolean settled(AccidentDetector detector, long tick) {
+        if (tick + 1 >= horizon) {
+            return true;
+        }
         if (seen == detector.accidentCount()) {
             return false;
         }

@@ -7,14 +7,22 @@ import java.util.Map;
 /**
  * The result of one run: how it ended, every accident event in order, the contacts the blame
  * rules excused, the ticks simulated, both seeds that reproduce it, and how close it came to each
- * accident ({@link Margins}: near misses, reported beside accidents and never counted as failures).
+ * accident ({@link Margins}: near misses, reported beside accidents and never counted as failures),
+ * and, when the controller failed, why (empty otherwise).
  */
 public record RunResult(long externalSeed, long internalSeed, Outcome outcome, List<Accident> accidents,
-                        Map<Blame, Integer> excusedContacts, long ticks, Margins margins) {
+                        Map<Blame, Integer> excusedContacts, long ticks, Margins margins, String failureReason) {
     public RunResult {
         accidents = List.copyOf(accidents);
         excusedContacts = Map.copyOf(excusedContacts);
         java.util.Objects.requireNonNull(margins, "margins");
+        java.util.Objects.requireNonNull(failureReason, "failureReason");
+    }
+
+    /** A run whose controller did not fail: no reason to keep. */
+    public RunResult(long externalSeed, long internalSeed, Outcome outcome, List<Accident> accidents,
+                     Map<Blame, Integer> excusedContacts, long ticks, Margins margins) {
+        this(externalSeed, internalSeed, outcome, accidents, excusedContacts, ticks, margins, "");
     }
 
     /** A result whose margins were not measured. */
@@ -25,6 +33,16 @@ public record RunResult(long externalSeed, long internalSeed, Outcome outcome, L
 
     public boolean hasAccident() {
         return !accidents.isEmpty();
+    }
+
+    /** The controller's failure the run ended in, if it did ({@link #failureReason()} says why). */
+    public java.util.Optional<Failure> controllerFailure() {
+        return Failure.of(outcome);
+    }
+
+    /** Whether the run failed: an accident, or the controller failed. */
+    public boolean failed() {
+        return hasAccident() || controllerFailure().isPresent();
     }
 
     public long count(AccidentType type) {

@@ -11,7 +11,9 @@ import sitcov.vehicles.BuiltinCar;
 
 /**
  * Which controller drives the car under test, as a preset or the command line names it:
- * {@code builtin} (sitcov's own car, in process) or {@code exec:COMMAND ARGS...} (a program that
+ * {@code builtin} (sitcov's own car, in process), {@code builtin:FAULTS} (with faults planted),
+ * {@code java:NAME} (a Java controller registered in {@link JavaControllers}, in process) or
+ * {@code exec:COMMAND ARGS...} (a program that
  * speaks the protocol; the command line is split at spaces, and '...' or "..." keep spaces in one
  * argument).
  */
@@ -52,6 +54,19 @@ public sealed interface ControllerChoice {
         @Override
         public Workers open(String sitcovVersion, long tickTimeoutMillis, long handshakeTimeoutMillis) {
             return inProcess(BuiltinCar.withPlanted(faults), text());
+        }
+    }
+
+    /** A controller written in Java, registered by name in {@link JavaControllers}, run in process. */
+    record InJava(String name) implements ControllerChoice {
+        @Override
+        public String text() {
+            return "java:" + name;
+        }
+
+        @Override
+        public Workers open(String sitcovVersion, long tickTimeoutMillis, long handshakeTimeoutMillis) {
+            return inProcess(JavaControllers.named(name).orElseThrow(), text());
         }
     }
 
@@ -137,6 +152,15 @@ public sealed interface ControllerChoice {
             }
             return new Planted(faults);
         }
+        if (t.startsWith("java:")) {
+            String name = t.substring("java:".length()).strip();
+            if (JavaControllers.named(name).isEmpty()) {
+                throw new IllegalArgumentException("java:" + name + " is not a registered Java controller; "
+                        + (JavaControllers.names().isEmpty() ? "none is registered"
+                        : "the registered ones are " + String.join(", ", JavaControllers.names())));
+            }
+            return new InJava(name);
+        }
         if (t.startsWith("exec:")) {
             List<String> words = split(t.substring("exec:".length()));
             if (words.isEmpty()) {
@@ -146,8 +170,8 @@ public sealed interface ControllerChoice {
             return new Exec(words);
         }
         throw new IllegalArgumentException("a controller is builtin, builtin:FAULTS (the builtin car with those faults"
-                + " always on, e.g. builtin:16) or exec:COMMAND ARGS (e.g. exec:python3"
-                + " experiments/controllers/lane_follower.py), not '" + text + "'");
+                + " always on, e.g. builtin:16), java:NAME (a registered Java controller) or exec:COMMAND ARGS (e.g."
+                + " exec:python3 experiments/controllers/lane_follower.py), not '" + text + "'");
     }
 
     /** Splits at white space; '...' and "..." keep their spaces. */

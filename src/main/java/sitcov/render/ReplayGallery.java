@@ -9,6 +9,7 @@ import java.util.List;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapRun;
 import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.FaultVerdict;
 import sitcov.judge.JudgedMap;
 import sitcov.judge.MapRunner;
@@ -26,8 +27,8 @@ public final class ReplayGallery {
     private ReplayGallery() {
     }
 
-    public static Path picture(Path folder, Fault fault) {
-        return folder.resolve(ResultsFolder.REPLAYS).resolve("fault-" + fault.id() + ".png");
+    public static Path picture(Path folder, Variant variant) {
+        return folder.resolve(ResultsFolder.REPLAYS).resolve("fault-" + variant.id() + ".png");
     }
 
     public static void write(Path folder, ExperimentConfig config, List<MapRun> inOrder) throws IOException {
@@ -35,12 +36,12 @@ public final class ReplayGallery {
             // the pictures run the builtin car; a folder that tested another controller shows none
             return;
         }
-        List<Fault> faults = config.faultList();
+        List<Variant> faults = config.variants();
         List<Runnable> pictures = new ArrayList<>();
         for (int f = 0; f < faults.size(); f++) {
             for (MapRun run : inOrder) {
-                if (run.faults().get(f).found(Notion.DIFFERENTIAL)) {
-                    Fault fault = faults.get(f);
+                if (faults.get(f) instanceof Variant.Seeded seeded && run.faults().get(f).found(Notion.DIFFERENTIAL)) {
+                    Fault fault = seeded.fault();
                     pictures.add(() -> {
                         try {
                             draw(folder, config, run, fault);
@@ -64,7 +65,7 @@ public final class ReplayGallery {
         var map = ResultsRows.worldMap(folder, run);
         JudgedMap judged = MapRunner.judge(map, run.internalSeed(), List.of(fault), config.faultyRuns());
         FaultVerdict verdict = judged.verdicts().get(0);
-        Path file = picture(folder, fault);
+        Path file = picture(folder, new Variant.Seeded(fault));
         Files.createDirectories(file.getParent());
         MapRenderer.writeAtomically(new ReplayPicture(PIXELS_PER_METRE).render(map, run.internalSeed(), verdict,
                 config.faultyRuns()), file);

@@ -97,9 +97,10 @@ public final class ReplayPicture {
         TrajectoryRecorder free = new TrajectoryRecorder();
         RunResult faultFree = sitcov.judge.Simulator.run(map, internalSeed, java.util.Set.of(), free).result();
         TrajectoryRecorder faulty = new TrajectoryRecorder();
-        var record = sitcov.judge.Simulator.run(map, internalSeed, java.util.Set.of(verdict.fault()), faulty);
+        sitcov.faults.Fault fault = verdict.seededFault().orElseThrow();
+        var record = sitcov.judge.Simulator.run(map, internalSeed, java.util.Set.of(fault), faulty);
         return render(map, new Side(free, faultFree), new Side(faulty, record.result()),
-                record.activations().get(verdict.fault().ordinal()), verdictLine(verdict, length), verdict.newAccident());
+                record.activations().get(fault.ordinal()), verdictLine(verdict, length), verdict.newAccident());
     }
 
     private void title(Graphics2D g, int half, int gap, Activation activation, String verdict) {

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import sitcov.analysis.Comparison;
+import sitcov.analysis.ControllerFailures;
 import sitcov.analysis.Discovery;
 import sitcov.analysis.OwnFailures;
 import sitcov.analysis.SituationFaults;
@@ -20,7 +21,9 @@ import sitcov.results.Columns;
 import sitcov.results.OutputFile;
 import sitcov.results.ResultsFolder;
 import sitcov.results.StatsCsv;
+import sitcov.verdict.ControllerFailuresText;
 import sitcov.verdict.OwnFailuresText;
+import sitcov.verdict.VariantsText;
 import sitcov.verdict.VerdictText;
 
 /**
@@ -48,9 +51,13 @@ final class AnalysisFiles {
         OutputFile.writeLines(folder.resolve(ResultsFolder.STATS), StatsCsv.rows(comparison));
         String reference = config.drivers().contains("random") ? "random" : config.drivers().get(0);
         OwnFailures own = OwnFailures.of(summary.results(), config.drivers(), reference);
-        List<String> verdict = new ArrayList<>(VerdictText.lines(comparison, uniformity, config.budget()));
+        List<String> verdict = new ArrayList<>(ControllerFailuresText.lines(
+                ControllerFailures.of(summary.results(), config.variants())));
+        verdict.addAll(VariantsText.lines(config));
+        verdict.addAll(VerdictText.lines(comparison, uniformity, config.budget()));
         if (!summary.results().isEmpty()) {
-            verdict.addAll(OwnFailuresText.lines(own, reference, summary.results().size()));
+            verdict.addAll(OwnFailuresText.lines(own, reference, summary.results().size(),
+                    config.controller().equals(ExperimentConfig.BUILTIN) && config.onlySeeded()));
         }
         OutputFile.writeLines(folder.resolve(ResultsFolder.VERDICT), verdict);
         OutputFile.writeLines(folder.resolve(ResultsFolder.OWN_FAILURES), ownFailures(own));
@@ -119,7 +126,7 @@ final class AnalysisFiles {
         List<String> rows = new ArrayList<>();
         rows.add(UNIFORMITY.header());
         for (SituationFaults.Uniformity u : tests) {
-            rows.add(UNIFORMITY.row().set("fault", u.fault().id()).set("maps", u.maps()).set("found", u.found())
+            rows.add(UNIFORMITY.row().set("fault", u.variant().id()).set("maps", u.maps()).set("found", u.found())
                     .set("explained_by_cell", sixPlaces(u.explained())).set("explained_by_chance", sixPlaces(u.byChance()))
                     .set("p_permutation", sixPlaces(u.p())).text());
         }

@@ -54,8 +54,11 @@ final class HtmlReport {
         h.append("<h1>").append(esc(config.name())).append("</h1><p class=\"muted\">master seed ")
                 .append(config.masterSeed()).append(" · ").append(config.replications()).append(" replications · drivers ")
                 .append(esc(String.join(", ", config.drivers()))).append(" · ").append(config.candidates())
-                .append(" candidates · budget ").append(esc(config.budget().key())).append(" · faults ")
-                .append(esc(sitcov.faults.FaultSet.format(config.faults()))).append(" · faulty runs ")
+                .append(" candidates · budget ").append(esc(config.budget().key()))
+                .append(config.onlySeeded() && !config.variants().isEmpty()
+                        ? " · faults " + esc(sitcov.faults.FaultSet.format(config.faults()))
+                        : " · controller " + esc(config.controller()) + " · variants " + esc(variants(config)))
+                .append(" · faulty runs ")
                 .append(esc(config.faultyRuns().key())).append("</p>\n");
         h.append("<h2>Verdict</h2><div class=\"verdict\">");
         verdict(h, lines(folder, ResultsFolder.VERDICT));
@@ -83,6 +86,14 @@ final class HtmlReport {
      * The verdict's lines: headings ("## ...") as headings, "In short: ..." in bold, items ("- ...") as
      * a list under the line before them, the rest as paragraphs.
      */
+    /** Each variant as id label (spec), or none. */
+    private static String variants(ExperimentConfig config) {
+        if (config.variants().isEmpty()) {
+            return "none (the reference's own failures)";
+        }
+        return String.join("; ", config.variants().stream().map(v -> v.id() + " " + v.label() + " (" + v.spec() + ")").toList());
+    }
+
     private static void verdict(StringBuilder h, List<String> lines) {
         boolean inList = false;
         for (String line : lines) {

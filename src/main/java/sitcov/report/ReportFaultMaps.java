@@ -8,6 +8,7 @@ import java.util.Locale;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapId;
 import sitcov.experiment.MapRun;
+import sitcov.judge.Variant;
 import sitcov.judge.Notion;
 import sitcov.render.ReplayGallery;
 import sitcov.results.ResultsFolder;
@@ -34,11 +35,14 @@ final class ReportFaultMaps {
      * The command that runs row {@code row}'s faulty run again with the folder's controller, when that is
      * not the builtin car (which {@code replay} runs): {@code simulate} with the map, seeds, fault and controller.
      */
-    static String rerun(int row, MapRun run, int fault, String controller) {
+    /** The command that runs the row's map with its variant: a seeded fault in the reference, or the variant's controller. */
+    static String rerun(int row, MapRun run, Variant variant, String controller) {
         String map = run.map() instanceof MapId.Situation s
                 ? "--load " + ResultsFolder.SITUATIONS + "/" + s.name() + ".situation" : "--seed " + run.externalSeed();
-        return "java -jar \"$" + JAR + "\" simulate " + map + " --internal-seed " + run.internalSeed() + " --faults " + fault
-                + " --controller \"" + controller + "\" --png run-row-" + row + ".png";
+        String with = variant instanceof Variant.Seeded ? " --faults " + variant.id() + " --controller \"" + controller + "\""
+                : " --controller \"" + variant.spec() + "\"";
+        return "java -jar \"$" + JAR + "\" simulate " + map + " --internal-seed " + run.internalSeed() + with
+                + " --png run-row-" + row + ".png";
     }
 
     static void append(StringBuilder h, Path folder, ExperimentConfig config, List<MapRun> inOrder, String version) {
@@ -51,7 +55,7 @@ final class ReportFaultMaps {
                 + "=$PWD/target/sitcov-" + version + ".jar")).append(builtin ? "" : " This folder tested the controller "
                 + HtmlReport.esc(config.controller()) + ", not the builtin car that replay runs: each command runs the map"
                 + " with the fault through that controller into a picture instead.").append("</p>");
-        var faults = config.faultList();
+        var faults = config.variants();
         int perMap = 1 + faults.size();
         for (int f = 0; f < faults.size(); f++) {
             List<String> found = new ArrayList<>();
@@ -67,11 +71,11 @@ final class ReportFaultMaps {
                                 + "<br>%s</li>", run.replication(), HtmlReport.esc(run.driver()), run.mapIndex(),
                                 HtmlReport.esc(run.map().text()), outcome.newAccident().map(Enum::name).orElse("FOUND"), row,
                                 HtmlReport.command(builtin ? replay(row)
-                                        : rerun(row, run, faults.get(f).id(), config.controller()))));
+                                        : rerun(row, run, faults.get(f), config.controller()))));
                     }
                 }
             }
-            h.append("<h3>fault ").append(faults.get(f).id()).append(" · ").append(HtmlReport.esc(faults.get(f).label()))
+            h.append(faults.get(f) instanceof Variant.Seeded ? "<h3>fault " : "<h3>variant ").append(faults.get(f).id()).append(" · ").append(HtmlReport.esc(faults.get(f).label()))
                     .append("</h3><p>found on ").append(total).append(" of the ").append(inOrder.size())
                     .append(" maps judged").append(total > found.size() ? " (the first " + found.size() + " listed)" : "")
                     .append("</p>");

@@ -40,7 +40,7 @@ public final class JournalFiles {
         Path runsFile = folder.resolve(ResultsFolder.RUNS);
         JournalCheck.Checked runLines = lines(folder, ResultsFolder.RUNS, check, manifest.complete(), fix);
         List<MapRun> runs = runsCsv.read(runLines.lines(), runsFile.toString(), fix);
-        int perMap = 1 + config.faultList().size();
+        int perMap = 1 + config.variants().size();
         if (manifest.complete() && runLines.lines().size() != 1 + runs.size() * perMap) {
             throw new IllegalArgumentException(runsFile + ":" + (2 + runs.size() * perMap) + ": a map's block of rows is cut"
                     + " short, in a folder that was complete; " + fix);

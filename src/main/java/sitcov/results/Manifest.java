@@ -22,6 +22,7 @@ import sitcov.experiment.BudgetKind;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.Shard;
 import sitcov.faults.FaultSet;
+import sitcov.judge.VariantList;
 import sitcov.judge.FaultyRuns;
 
 /**
@@ -91,7 +92,11 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         if (c.isSweep()) {
             m.put("sweep", String.join(",", c.sweep().stream().map(String::valueOf).toList()));
         }
-        m.put("faults", FaultSet.format(c.faults()));
+        if (!c.variants().isEmpty() && c.onlySeeded()) {
+            m.put("faults", FaultSet.format(c.faults()));
+        } else {
+            m.put("variants", VariantList.format(c.variants()));
+        }
         m.put("budget", c.budget().key());
         m.put("candidate_limit", Integer.toString(c.candidateLimit()));
         if (c.tickBudget() > 0) {
@@ -164,7 +169,9 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
             List<String> drivers = List.of(required(p, "drivers").split(","));
             ExperimentConfig config = new ExperimentConfig(required(p, "preset"), Long.parseLong(required(p, "master_seed")),
                     Integer.parseInt(required(p, "candidates")), Integer.parseInt(required(p, "replications")),
-                    FaultSet.parse(required(p, "faults")), BudgetKind.ofKey(required(p, "budget")), grid,
+                    p.containsKey("variants") ? VariantList.parse(p.getProperty("variants"))
+                            : ExperimentConfig.seeded(FaultSet.parse(required(p, "faults"))),
+                    BudgetKind.ofKey(required(p, "budget")), grid,
                     drivers, sweep, Integer.parseInt(required(p, "candidate_limit")),
                     // folders written before faulty runs could stop at their verdict ran them to the end
                     FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.TO_END.key())),

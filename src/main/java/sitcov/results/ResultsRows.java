@@ -9,7 +9,7 @@ import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.Journal;
 import sitcov.experiment.MapId;
 import sitcov.experiment.MapRun;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.FaultOutcome;
 import sitcov.world.MapGenerator;
 import sitcov.world.SituationFile;
@@ -21,11 +21,16 @@ import sitcov.world.WorldMap;
  * fault in id order), or by replication, driver, map index and fault.
  */
 public final class ResultsRows {
-    /** One recorded run: the experiment, the judged map, and the fault of the row (empty: the fault-free row). */
-    public record Row(ExperimentConfig config, MapRun map, Optional<Fault> fault, int number) {
-        /** The fault's recorded outcome on this map. */
+    /** One recorded run: the experiment, the judged map, and the variant of the row (empty: the reference's row). */
+    public record Row(ExperimentConfig config, MapRun map, Optional<Variant> variant, int number) {
+        /** The variant's recorded outcome on this map. */
         public Optional<FaultOutcome> outcome() {
-            return fault.flatMap(f -> map.faults().stream().filter(o -> o.fault() == f).findFirst());
+            return variant.flatMap(f -> map.faults().stream().filter(o -> o.variant().equals(f)).findFirst());
+        }
+
+        /** The seeded fault of the row, when its variant is one. */
+        public Optional<sitcov.faults.Fault> fault() {
+            return variant.filter(v -> v instanceof Variant.Seeded).map(v -> ((Variant.Seeded) v).fault());
         }
     }
 
@@ -36,14 +41,14 @@ public final class ResultsRows {
         Manifest manifest = Manifest.read(folder);
         ExperimentConfig config = manifest.config();
         List<Journal.Entry> maps = JournalFiles.inOrder(config, JournalFiles.read(folder, manifest));
-        int perMap = 1 + config.faultList().size();
+        int perMap = 1 + config.variants().size();
         if (number < 1 || number > maps.size() * perMap) {
             throw new IllegalArgumentException("runs.csv of " + folder + " has rows 1.." + maps.size() * perMap
                     + " under its header, not " + number);
         }
         int slot = (number - 1) % perMap;
         MapRun map = maps.get((number - 1) / perMap).run();
-        return new Row(config, map, slot == 0 ? Optional.empty() : Optional.of(config.faultList().get(slot - 1)), number);
+        return new Row(config, map, slot == 0 ? Optional.empty() : Optional.of(config.variants().get(slot - 1)), number);
     }
 
     /** Every row of {@code runs.csv}, in its order. */
@@ -54,27 +59,29 @@ public final class ResultsRows {
         List<Row> rows = new ArrayList<>();
         for (Journal.Entry map : maps) {
             rows.add(new Row(config, map.run(), Optional.empty(), rows.size() + 1));
-            for (Fault f : config.faultList()) {
+            for (Variant f : config.variants()) {
                 rows.add(new Row(config, map.run(), Optional.of(f), rows.size() + 1));
             }
         }
         return rows;
     }
 
-    public static Row find(Path folder, int replication, String driver, int mapIndex, Optional<Fault> fault)
+    /** The row of {@code driver}'s map {@code mapIndex} in {@code replication}: the reference's, or the variant {@code variantId}'s. */
+    public static Row find(Path folder, int replication, String driver, int mapIndex, Optional<Integer> variantId)
             throws IOException {
         Manifest manifest = Manifest.read(folder);
         ExperimentConfig config = manifest.config();
         List<Journal.Entry> maps = JournalFiles.inOrder(config, JournalFiles.read(folder, manifest));
-        if (fault.isPresent() && !config.faultList().contains(fault.get())) {
-            throw new IllegalArgumentException("the experiment in " + folder + " did not seed fault " + fault.get().id()
-                    + "; its faults are " + config.faultList().stream().map(f -> Integer.toString(f.id())).toList());
+        Optional<Variant> fault = variantId.flatMap(id -> config.variants().stream().filter(v -> v.id() == id).findFirst());
+        if (variantId.isPresent() && fault.isEmpty()) {
+            throw new IllegalArgumentException("the experiment in " + folder + " has no variant " + variantId.get()
+                    + "; its variants are " + config.variants().stream().map(f -> Integer.toString(f.id())).toList());
         }
-        int perMap = 1 + config.faultList().size();
+        int perMap = 1 + config.variants().size();
         for (int i = 0; i < maps.size(); i++) {
             MapRun m = maps.get(i).run();
             if (m.replication() == replication && m.driver().equals(driver) && m.mapIndex() == mapIndex) {
-                int slot = fault.map(f -> 1 + config.faultList().indexOf(f)).orElse(0);
+                int slot = fault.map(f -> 1 + config.variants().indexOf(f)).orElse(0);
                 return new Row(config, m, fault, i * perMap + slot + 1);
             }
         }

@@ -9,7 +9,7 @@ import sitcov.analysis.Summary;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ReplicationResult;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.Notion;
 
 /**
@@ -38,7 +38,7 @@ public final class ResultsTables {
         return new Columns(names);
     }
 
-    private static String faultColumn(Fault f) {
+    private static String faultColumn(Variant f) {
         return "fault_" + f.id();
     }
 
@@ -88,7 +88,7 @@ public final class ResultsTables {
         Columns columns = new Columns(names);
         List<String> rows = new ArrayList<>();
         rows.add(columns.header());
-        List<Fault> faults = summary.faults();
+        List<Variant> faults = summary.faults();
         for (Notion notion : Notion.values()) {
             double[][] mean = new double[drivers.size()][];
             for (int d = 0; d < drivers.size(); d++) {

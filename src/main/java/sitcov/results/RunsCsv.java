@@ -7,11 +7,12 @@ import java.util.Optional;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapId;
 import sitcov.experiment.MapRun;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.Detection;
 import sitcov.judge.FaultOutcome;
 import sitcov.judge.RunSummary;
 import sitcov.oracle.AccidentType;
+import sitcov.oracle.Failure;
 import sitcov.oracle.Margins;
 import sitcov.oracle.NearMiss;
 import sitcov.oracle.Outcome;
@@ -32,18 +33,25 @@ public final class RunsCsv {
     private static final String DETECTION = "detection";
     private static final String NEW_ACCIDENT = "new_accident";
     private static final String PAPER_FOUND = "paper_found";
+    /** Why the run's controller failed: only in folders of experiments whose controllers could fail. */
+    private static final String CONTROLLER_FAILURE = "controller_failure";
+    /** A reason is kept to this many characters, on one line and without commas. */
+    private static final int REASON_CHARS = 240;
     /** The columns only a faulty run has: empty in the fault-free row. */
     private static final List<String> FAULT_ONLY =
             List.of(REACHED, EFFECTIVE, FIRST_EFFECTIVE_TICK, DETECTION, NEW_ACCIDENT, PAPER_FOUND);
 
-    private final List<Fault> faults;
+    private final List<Variant> faults;
     /** The columns naming the map, the same in every row of its block. */
     private final List<String> mapColumns;
     private final List<String> criteria;
     private final Columns columns;
+    private final boolean reasons;
 
     public RunsCsv(ExperimentConfig config) {
-        this.faults = config.faultList();
+        // the builtin car in process cannot fail as a controller: its folders keep the columns they always had
+        this.reasons = !config.controller().equals(ExperimentConfig.BUILTIN) || !config.onlySeeded();
+        this.faults = config.variants();
         this.criteria = config.grid().criteria().stream().map(c -> c.key().replace('-', '_')).toList();
         List<String> map = new ArrayList<>(List.of("replication", "driver", "map_index", "candidate", "map",
                 "external_seed", "internal_seed", "cell"));
@@ -57,6 +65,9 @@ public final class RunsCsv {
         all.addAll(FAULT_ONLY);
         List<String> margins = marginColumns();
         all.addAll(margins);
+        if (reasons) {
+            all.add(CONTROLLER_FAILURE);
+        }
         this.columns = new Columns(all, java.util.Set.copyOf(margins));
     }
 
@@ -88,7 +99,7 @@ public final class RunsCsv {
         FAULT_ONLY.forEach(c -> faultFree.set(c, ""));
         out.append(faultFree.line());
         for (FaultOutcome f : run.faults()) {
-            Columns.Row row = mapRow(run).set(FAULT, f.fault().id());
+            Columns.Row row = mapRow(run).set(FAULT, f.variant().id());
             result(row, f.run());
             row.set(REACHED, f.reached()).set(EFFECTIVE, f.effective()).set(FIRST_EFFECTIVE_TICK, f.firstEffectiveTick())
                     .set(DETECTION, f.detection()).set(NEW_ACCIDENT, f.newAccident().map(Enum::name).orElse(""))
@@ -108,8 +119,11 @@ public final class RunsCsv {
         return row;
     }
 
-    private static void result(Columns.Row row, RunSummary r) {
+    private void result(Columns.Row row, RunSummary r) {
         row.set("outcome", r.outcome()).set("ticks", r.ticks());
+        if (reasons) {
+            row.set(CONTROLLER_FAILURE, reason(r.failureReason()));
+        }
         for (AccidentType t : AccidentType.values()) {
             row.set(t.column(), r.accidents().get(t.ordinal()));
         }
@@ -120,6 +134,12 @@ public final class RunsCsv {
         for (AccidentType t : AccidentType.values()) {
             row.set(t.robustnessColumn(), margin(m.robustness(t)));
         }
+    }
+
+    /** A controller's reason in one cell: its first line, no commas or quotes, at most {@link #REASON_CHARS} characters. */
+    static String reason(String text) {
+        String line = text.lines().findFirst().orElse("").replace(',', ';').replace('"', '\'').strip();
+        return line.length() <= REASON_CHARS ? line : line.substring(0, REASON_CHARS - 1) + "…";
     }
 
     /** A margin as runs.csv writes it: {@link Margins#DECIMALS} decimals, "inf" never met, blank unknown. */
@@ -184,7 +204,7 @@ public final class RunsCsv {
                     String accident = row.get(NEW_ACCIDENT);
                     outcomes.add(new FaultOutcome(faults.get(f), summary(row), row.bool(REACHED), row.bool(EFFECTIVE),
                             row.longValue(FIRST_EFFECTIVE_TICK), Detection.valueOf(row.get(DETECTION)),
-                            accident.isEmpty() ? Optional.empty() : Optional.of(AccidentType.valueOf(accident)),
+                            accident.isEmpty() ? Optional.empty() : Optional.of(Failure.valueOf(accident)),
                             row.bool(PAPER_FOUND)));
                 }
                 runs.add(new MapRun(first.integer("replication"), first.get("driver"), first.integer("map_index"),
@@ -198,7 +218,7 @@ public final class RunsCsv {
         return runs;
     }
 
-    private static RunSummary summary(Columns.Line row) {
+    private RunSummary summary(Columns.Line row) {
         List<Long> counts = new ArrayList<>();
         for (AccidentType t : AccidentType.values()) {
             counts.add(row.longValue(t.column()));
@@ -211,7 +231,8 @@ public final class RunsCsv {
         for (AccidentType t : AccidentType.values()) {
             rho.add(margin(row.get(t.robustnessColumn())));
         }
-        return new RunSummary(Outcome.valueOf(row.get("outcome")), row.longValue("ticks"), counts, new Margins(near, rho));
+        return new RunSummary(Outcome.valueOf(row.get("outcome")), row.longValue("ticks"), counts, new Margins(near, rho),
+                reasons ? row.get(CONTROLLER_FAILURE) : "");
     }
 
     private static void check(boolean ok, String expected) {

@@ -45,7 +45,7 @@ public final class StatsCsv {
         }
         for (FaultComparison f : comparison.faults()) {
             String role = f.finding().tested() ? "exploratory" : "untested";
-            Columns.Row row = COLUMNS.row().set("kind", "fault").set("name", "fault_" + f.fault().id())
+            Columns.Row row = COLUMNS.row().set("kind", "fault").set("name", "fault_" + f.variant().id())
                     .set("driver_a", f.driverA()).set("driver_b", f.driverB()).set("role", role)
                     .set("finding", f.finding().key()).set("note", text(f.note()));
             paired(row, f.paired());

@@ -62,6 +62,10 @@ public final class AutonomousCar implements Bodied, Steppable {
         } catch (ControllerFailure failed) {
             failure = failed;
             return;
+        } catch (RuntimeException bug) {
+            // a controller in process that throws has crashed, as a program that exits has: the run ends in its failure
+            failure = new ControllerFailure(ControllerFailure.Kind.ERROR, "the controller threw " + bug);
+            return;
         }
         report.copyOf(command.report());
         grantRightOfWay(state.tick());

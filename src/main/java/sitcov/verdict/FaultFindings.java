@@ -29,7 +29,7 @@ public final class FaultFindings {
             if (!f.driverA().equals(a) || !f.driverB().equals(b)) {
                 continue;
             }
-            int id = f.fault().id();
+            int id = f.variant().id();
             switch (f.finding()) {
                 case HIGHER_A -> moreA.add(found(f));
                 case HIGHER_B -> moreB.add(found(f));
@@ -75,7 +75,7 @@ public final class FaultFindings {
         double low = a ? d.difference().low() : -d.difference().high();
         double high = a ? d.difference().high() : -d.difference().low();
         return String.format(Locale.ROOT, "fault %d (%s %% of %s's maps against %s %% of %s's, +%s points, CI %s to %s;"
-                + " Holm p = %s)", f.fault().id(), percent(a ? d.meanA() : d.meanB()), a ? f.driverA() : f.driverB(),
+                + " Holm p = %s)", f.variant().id(), percent(a ? d.meanA() : d.meanB()), a ? f.driverA() : f.driverB(),
                 percent(a ? d.meanB() : d.meanA()), a ? f.driverB() : f.driverA(), points(sign * d.difference().estimate()),
                 points(low), points(high), p(d.pAdjusted()));
     }

@@ -5,17 +5,27 @@ import java.util.List;
 import java.util.Locale;
 import sitcov.analysis.OwnFailures;
 
-/** The verdict's paragraph on the reference car's own failures: what each driver found, in words that claim no more than the sign test shows. */
+/** The verdict's paragraph on the reference's own failures: what each driver found, in words that claim no more than the sign test shows. */
 public final class OwnFailuresText {
     private OwnFailuresText() {
     }
 
-    public static List<String> lines(OwnFailures own, String reference, int replications) {
+    /** {@code builtinCar}: the reference is the builtin car and the variants its seeded faults, as the paper's are. */
+    public static List<String> lines(OwnFailures own, String reference, int replications, boolean builtinCar) {
         List<String> out = new ArrayList<>();
-        out.add(PairSummary.HEADING + "The reference car's own failures (fault-free runs with an accident)");
-        out.add(String.format(Locale.ROOT, "Failures the fault-free car had by itself, not a seeded fault's: %d maps in"
-                + " all, listed in own-failures.csv with the command that replays each. Rates are per million ticks of"
-                + " everything the driver spent; distinct failures count a cell × accident type once.", own.failures().size()));
+        if (builtinCar) {
+            out.add(PairSummary.HEADING + "The reference car's own failures (fault-free runs with an accident)");
+            out.add(String.format(Locale.ROOT, "Failures the fault-free car had by itself, not a seeded fault's: %d maps in"
+                    + " all, listed in own-failures.csv with the command that replays each. Rates are per million ticks of"
+                    + " everything the driver spent; distinct failures count a cell × accident type once.",
+                    own.failures().size()));
+        } else {
+            out.add(PairSummary.HEADING + "The reference controller's own failures (reference runs with an accident or a"
+                    + " controller failure)");
+            out.add(String.format(Locale.ROOT, "Failures the reference had by itself, not a variant's: %d maps in all, listed"
+                    + " in own-failures.csv. Rates are per million ticks of everything the driver spent; distinct failures"
+                    + " count a cell × failure type once.", own.failures().size()));
+        }
         OwnFailures.DriverRate ref = own.rates().stream().filter(r -> r.driver().equals(reference)).findFirst().orElseThrow();
         for (OwnFailures.DriverRate r : own.rates()) {
             String line = String.format(Locale.ROOT, "- %s: %d failures in %.2f M ticks, %.2f per million ticks; %.2f"

@@ -64,7 +64,7 @@ public final class PairSummary {
 
     /** "3 faults (0, 7, 16)" found on a larger share of one driver's maps, if any. */
     private static java.util.Optional<String> faults(List<FaultComparison> faults, Finding finding) {
-        List<String> ids = faults.stream().filter(f -> f.finding() == finding).map(f -> String.valueOf(f.fault().id()))
+        List<String> ids = faults.stream().filter(f -> f.finding() == finding).map(f -> String.valueOf(f.variant().id()))
                 .toList();
         if (ids.isEmpty()) {
             return java.util.Optional.empty();

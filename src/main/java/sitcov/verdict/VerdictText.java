@@ -202,13 +202,13 @@ public final class VerdictText {
             Optional<String> out = leftOut(u.found(), u.maps());
             if (out.isPresent()) {
                 if (out.get().equals(TOO_RARE)) {
-                    rare.add(u.fault().id());
+                    rare.add(u.variant().id());
                 } else if (out.get().equals(TOO_RARELY_MISSED)) {
-                    common.add(u.fault().id());
+                    common.add(u.variant().id());
                 }
                 continue;
             }
-            counted.add(u.fault().id());
+            counted.add(u.variant().id());
             explained += u.explained();
             chance += u.byChance();
             beyond += u.p() < ALPHA ? 1 : 0;

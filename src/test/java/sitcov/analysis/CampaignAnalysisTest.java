@@ -36,14 +36,14 @@ class CampaignAnalysisTest {
         if (falsified) {
             List<Long> none = Collections.nCopies(AccidentType.values().length, 0L);
             RunSummary run = new RunSummary(Outcome.STOPPED_AT_VERDICT, ticks, none);
-            FaultOutcome hit = new FaultOutcome(f, run, true, true, 1, Detection.FOUND, Optional.of(AccidentType.LEAVEROAD),
+            FaultOutcome hit = new FaultOutcome(new sitcov.judge.Variant.Seeded(f), run, true, true, 1, Detection.FOUND, Optional.of(sitcov.oracle.Failure.LEAVEROAD),
                     true);
             found = Optional.of(new MapRun(trial, driver, 0, 0, new MapId.Seeded(trial), trial, trial, trial, List.of(), run,
                     List.of(hit)));
         }
         return new CampaignTrial(f, driver, trial, 7, "replication-" + trial, falsified, ticks, ticks, 1,
                 falsified ? StopReason.FALSIFIED : StopReason.TICKS, found,
-                falsified ? Optional.of(AccidentType.LEAVEROAD) : Optional.empty());
+                falsified ? Optional.of(sitcov.oracle.Failure.LEAVEROAD) : Optional.empty());
     }
 
     private static CampaignAnalysis analysis() {

@@ -19,7 +19,8 @@ import sitcov.oracle.AccidentType;
 import sitcov.oracle.Outcome;
 
 class DiscoveryTest {
-    static final List<Fault> FAULTS = List.of(Fault.TARGET_LANE_CHECK_SKIPPED, Fault.ONCOMING_AT_HALF_SPEED);
+    static final List<sitcov.judge.Variant> FAULTS = List.of(new sitcov.judge.Variant.Seeded(Fault.TARGET_LANE_CHECK_SKIPPED),
+            new sitcov.judge.Variant.Seeded(Fault.ONCOMING_AT_HALF_SPEED));
     static final RunSummary SAFE = new RunSummary(Outcome.TARGET_REACHED, 100, List.of(0L, 0L, 0L, 0L, 0L));
 
     /** Map {@code index} (candidate {@code candidate}) in {@code cell}; per fault F found, - not; each map costs 300 ticks. */
@@ -28,7 +29,7 @@ class DiscoveryTest {
         for (int f = 0; f < FAULTS.size(); f++) {
             boolean found = marks.charAt(f) == 'F';
             faults.add(new FaultOutcome(FAULTS.get(f), SAFE, true, true, 1, found ? Detection.FOUND : Detection.EFFECT_NO_FAILURE,
-                    found ? Optional.of(AccidentType.LEAVEROAD) : Optional.empty(), found));
+                    found ? Optional.of(sitcov.oracle.Failure.LEAVEROAD) : Optional.empty(), found));
         }
         return new MapRun(0, driver, index, candidate, new MapId.Seeded(candidate), candidate, candidate, cell,
                 List.of(0.0, 0.0, 0.0), SAFE, faults);

@@ -18,8 +18,8 @@ import sitcov.oracle.AccidentType;
 import sitcov.oracle.Outcome;
 
 class MetricsTest {
-    private static final List<Fault> FAULTS = List.of(Fault.WAYPOINTS_NORTH_EAST, Fault.MARKING_HALF_RANGE,
-            Fault.STOPS_TURNING_WHILE_OVERTAKING);
+    private static final List<sitcov.judge.Variant> FAULTS = sitcov.experiment.ExperimentConfig.seeded(java.util.EnumSet.copyOf(List.of(Fault.WAYPOINTS_NORTH_EAST, Fault.MARKING_HALF_RANGE,
+            Fault.STOPS_TURNING_WHILE_OVERTAKING)));
     private static final RunSummary SAFE = new RunSummary(Outcome.TARGET_REACHED, 100, List.of(0L, 0L, 0L, 0L, 0L));
 
     /** A map on which each fault is found (F), only by the paper's notion (P), or not at all (-). */
@@ -27,7 +27,7 @@ class MetricsTest {
         List<FaultOutcome> outcomes = new ArrayList<>();
         for (int i = 0; i < FAULTS.size(); i++) {
             char m = marks.charAt(i);
-            Optional<AccidentType> accident = m == 'F' ? Optional.of(AccidentType.LEAVEROAD) : Optional.empty();
+            Optional<sitcov.oracle.Failure> accident = m == 'F' ? Optional.of(sitcov.oracle.Failure.LEAVEROAD) : Optional.empty();
             outcomes.add(new FaultOutcome(FAULTS.get(i), SAFE, true, true, 3,
                     m == 'F' ? Detection.FOUND : Detection.EFFECT_NO_FAILURE, accident, m != '-'));
         }

@@ -42,7 +42,7 @@ class OwnFailuresTest {
     void eachDriversOwnFailuresAreCountedPerMillionTicksAndDistinctByCellAndAccidentType() {
         OwnFailures own = OwnFailures.of(RESULTS, List.of("random", "stress-search"), "random");
         assertEquals(5, own.failures().size(), "maps with a fault-free accident");
-        assertEquals(List.of(AccidentType.LEAVEROAD, AccidentType.TIMEOUT), own.failures().get(2).types());
+        assertEquals(List.of(sitcov.oracle.Failure.LEAVEROAD, sitcov.oracle.Failure.TIMEOUT), own.failures().get(2).types());
         OwnFailures.DriverRate random = own.rates().get(0);
         // 1 failure in 500 000 ticks; distinct: {3 off road} then none
         assertEquals(1, random.failures());

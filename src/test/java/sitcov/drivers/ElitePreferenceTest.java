@@ -36,9 +36,9 @@ class ElitePreferenceTest {
         List<FaultOutcome> outcomes = new ArrayList<>();
         for (int i = 0; i < FAULTS.size(); i++) {
             boolean found = marks.charAt(i) == 'F';
-            outcomes.add(new FaultOutcome(FAULTS.get(i), SAFE, true, found, found ? 3 : -1,
+            outcomes.add(new FaultOutcome(new sitcov.judge.Variant.Seeded(FAULTS.get(i)), SAFE, true, found, found ? 3 : -1,
                     found ? Detection.FOUND : Detection.REACHED_NO_EFFECT,
-                    found ? Optional.of(AccidentType.LEAVEROAD) : Optional.empty(), found));
+                    found ? Optional.of(sitcov.oracle.Failure.LEAVEROAD) : Optional.empty(), found));
         }
         return new MapRun(0, "fault-search", cell, cell, new MapId.Seeded(cell), 1, 1, cell, List.of(0.0, 0.0, 0.0), SAFE, outcomes);
     }

@@ -31,7 +31,7 @@ class ReplicationPlanTest {
         List<Long> none = java.util.Collections.nCopies(sitcov.oracle.AccidentType.values().length, 0L);
         sitcov.judge.RunSummary faultFree = new sitcov.judge.RunSummary(sitcov.oracle.Outcome.TARGET_REACHED, 100, none);
         sitcov.judge.RunSummary faulty = new sitcov.judge.RunSummary(sitcov.oracle.Outcome.STOPPED_AT_VERDICT, 50, none);
-        sitcov.judge.FaultOutcome outcome = new sitcov.judge.FaultOutcome(sitcov.faults.Fault.ofId(19), faulty, true, true,
+        sitcov.judge.FaultOutcome outcome = new sitcov.judge.FaultOutcome(new sitcov.judge.Variant.Seeded(sitcov.faults.Fault.ofId(19)), faulty, true, true,
                 3, found ? sitcov.judge.Detection.FOUND : sitcov.judge.Detection.EFFECT_NO_FAILURE, java.util.Optional.empty(),
                 found);
         return new MapRun(0, "second", 0, 0, new MapId.Seeded(1), 1, 2, 0, List.of(), faultFree, List.of(outcome));
@@ -39,7 +39,7 @@ class ReplicationPlanTest {
 
     @Test
     void inACampaignsTrialNoDriverLeadsAndEachSpendsTheFixedTicksUntilItsFirstFind() {
-        ExperimentConfig config = new ExperimentConfig("trial", 5, 40, 1, FaultSet.parse("19"), BudgetKind.FIXED_TICKS,
+        ExperimentConfig config = new ExperimentConfig("trial", 5, 40, 1, ExperimentConfig.seeded(FaultSet.parse("19")), BudgetKind.FIXED_TICKS,
                 GridDefinition.paper(), List.of("first", "second"), List.of(), 40, FaultyRuns.UNTIL_VERDICT,
                 AnalysisPlan.defaults(List.of("first", "second")), ExperimentConfig.BUILTIN, 300);
         ReplicationPlan plan = new ReplicationPlan(config.plan().get(0), config);
@@ -60,13 +60,13 @@ class ReplicationPlanTest {
 
     @Test
     void aTickBudgetGoesOnlyWithACampaignsTrialOfOneFault() {
-        assertThrows(IllegalArgumentException.class, () -> new ExperimentConfig("t", 5, 40, 1, FaultSet.parse("19"),
+        assertThrows(IllegalArgumentException.class, () -> new ExperimentConfig("t", 5, 40, 1, ExperimentConfig.seeded(FaultSet.parse("19")),
                 BudgetKind.TICKS, GridDefinition.paper(), List.of("a"), List.of(), 40, FaultyRuns.UNTIL_VERDICT,
                 AnalysisPlan.defaults(List.of("a")), ExperimentConfig.BUILTIN, 300));
-        assertThrows(IllegalArgumentException.class, () -> new ExperimentConfig("t", 5, 40, 1, FaultSet.parse("18,19"),
+        assertThrows(IllegalArgumentException.class, () -> new ExperimentConfig("t", 5, 40, 1, ExperimentConfig.seeded(FaultSet.parse("18,19")),
                 BudgetKind.FIXED_TICKS, GridDefinition.paper(), List.of("a"), List.of(), 40, FaultyRuns.UNTIL_VERDICT,
                 AnalysisPlan.defaults(List.of("a")), ExperimentConfig.BUILTIN, 300));
-        assertThrows(IllegalArgumentException.class, () -> new ExperimentConfig("t", 5, 40, 1, FaultSet.parse("19"),
+        assertThrows(IllegalArgumentException.class, () -> new ExperimentConfig("t", 5, 40, 1, ExperimentConfig.seeded(FaultSet.parse("19")),
                 BudgetKind.FIXED_TICKS, GridDefinition.paper(), List.of("a"), List.of(), 40, FaultyRuns.UNTIL_VERDICT,
                 AnalysisPlan.defaults(List.of("a")), ExperimentConfig.BUILTIN, 0));
     }

@@ -53,8 +53,8 @@ class StatsFiguresTest {
         List<Fault> ids = List.of(Fault.TARGET_LANE_CHECK_SKIPPED, Fault.ONCOMING_AT_HALF_SPEED);
         for (int f = 0; f < 2; f++) {
             boolean found = marks.charAt(f) == 'F';
-            faults.add(new FaultOutcome(ids.get(f), SAFE, true, true, 1, found ? Detection.FOUND : Detection.EFFECT_NO_FAILURE,
-                    found ? Optional.of(AccidentType.LEAVEROAD) : Optional.empty(), found));
+            faults.add(new FaultOutcome(new sitcov.judge.Variant.Seeded(ids.get(f)), SAFE, true, true, 1, found ? Detection.FOUND : Detection.EFFECT_NO_FAILURE,
+                    found ? Optional.of(sitcov.oracle.Failure.LEAVEROAD) : Optional.empty(), found));
         }
         return new MapRun(replication, driver, index, index, new MapId.Seeded(index), index, index, cell,
                 List.of(0.0, 0.0, 0.0), SAFE, faults);
@@ -122,11 +122,11 @@ class StatsFiguresTest {
         Summary summary = summary();
         List<FaultComparison> faults = comparison(summary).faults();
         FaultComparison bothEverywhere = faults.stream()
-                .filter(t -> t.driverB().equals("random") && t.fault().id() == 14).findFirst().orElseThrow();
-        FaultComparison neither = faults.stream().filter(t -> t.driverB().equals("random") && t.fault().id() == 19)
+                .filter(t -> t.driverB().equals("random") && t.variant().id() == 14).findFirst().orElseThrow();
+        FaultComparison neither = faults.stream().filter(t -> t.driverB().equals("random") && t.variant().id() == 19)
                 .findFirst().orElseThrow();
         FaultComparison differs = faults.stream().filter(t -> t.driverA().equals("coverage-filter")
-                && t.driverB().equals("every-other") && t.fault().id() == 14).findFirst().orElseThrow();
+                && t.driverB().equals("every-other") && t.variant().id() == 14).findFirst().orElseThrow();
         assertEquals(Optional.of("found on every map by both"), StatsFigures.noRatio(bothEverywhere));
         assertEquals(Optional.of("found by neither driver"), StatsFigures.noRatio(neither));
         assertEquals(Optional.empty(), StatsFigures.noRatio(differs), "6 of 6 against 3 of 9 has a ratio");

@@ -39,7 +39,7 @@ class ForkedRunsTest {
             assertEquals(whole, forked, "map " + seed + " internal seed " + seed + " " + length);
             for (FaultVerdict v : whole.verdicts()) {
                 found += v.detection().found() ? 1 : 0;
-                neverDeparted += v.activation().effective() ? 0 : 1;
+                neverDeparted += v.effective() ? 0 : 1;
             }
         }
         assertTrue(found > 0, "some faults are found, so forked runs with accidents were compared");

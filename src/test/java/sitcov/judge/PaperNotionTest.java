@@ -18,7 +18,7 @@ class PaperNotionTest {
         // crawls from below the crawl band), so its faulty run is the fault-free run, accident and all
         FaultVerdict v = MapRunner.judge(MapGenerator.generate(147), 147, List.of(Fault.CRAWL_DOUBLE_ACCELERATION))
                 .verdicts().get(0);
-        assertFalse(v.activation().reached(), v.toString());
+        assertFalse(v.reached(), v.toString());
         assertTrue(v.faultyRun().hasAccident(), v.toString());
         assertFalse(v.foundByPaperNotion(), v.toString());
         assertFalse(FaultOutcome.of(v).found(Notion.PAPER), v.toString());
@@ -27,7 +27,7 @@ class PaperNotionTest {
     @Test
     void anAccidentInARunWhoseFaultRanCounts() {
         FaultVerdict v = MapRunner.judge(MapGenerator.generate(1), 1, List.of(Fault.WAYPOINTS_NORTH_EAST)).verdicts().get(0);
-        assertTrue(v.activation().reached(), v.toString());
+        assertTrue(v.reached(), v.toString());
         assertTrue(v.faultyRun().hasAccident(), v.toString());
         assertTrue(v.foundByPaperNotion(), v.toString());
         assertTrue(FaultOutcome.of(v).found(Notion.PAPER), v.toString());
@@ -37,9 +37,9 @@ class PaperNotionTest {
     void aFolderWrittenBeforeTheNotionAskedForReachedIsReadByTheNotion() {
         // such folders hold "the faulty run had an accident" as paper_found, even where the fault never ran
         RunSummary crashed = new RunSummary(sitcov.oracle.Outcome.TARGET_REACHED, 300, List.of(1L, 0L, 0L, 0L, 0L));
-        FaultOutcome notReached = new FaultOutcome(Fault.CRAWL_DOUBLE_ACCELERATION, crashed, false, false, -1,
+        FaultOutcome notReached = new FaultOutcome(new sitcov.judge.Variant.Seeded(Fault.CRAWL_DOUBLE_ACCELERATION), crashed, false, false, -1,
                 Detection.NOT_REACHED, Optional.empty(), true);
-        FaultOutcome reached = new FaultOutcome(Fault.CRAWL_DOUBLE_ACCELERATION, crashed, true, false, -1,
+        FaultOutcome reached = new FaultOutcome(new sitcov.judge.Variant.Seeded(Fault.CRAWL_DOUBLE_ACCELERATION), crashed, true, false, -1,
                 Detection.REACHED_NO_EFFECT, Optional.empty(), true);
         assertEquals(List.of(false, true), List.of(notReached.found(Notion.PAPER), reached.found(Notion.PAPER)));
     }

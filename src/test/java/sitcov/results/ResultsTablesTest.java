@@ -35,8 +35,8 @@ class ResultsTablesTest {
         List<Fault> ids = List.of(Fault.TARGET_LANE_CHECK_SKIPPED, Fault.ONCOMING_AT_HALF_SPEED);
         for (int f = 0; f < 2; f++) {
             char m = marks.charAt(f);
-            faults.add(new FaultOutcome(ids.get(f), SAFE, true, true, 1, m == 'F' ? Detection.FOUND : Detection.EFFECT_NO_FAILURE,
-                    m == 'F' ? Optional.of(AccidentType.LEAVEROAD) : Optional.empty(), m != '-'));
+            faults.add(new FaultOutcome(new sitcov.judge.Variant.Seeded(ids.get(f)), SAFE, true, true, 1, m == 'F' ? Detection.FOUND : Detection.EFFECT_NO_FAILURE,
+                    m == 'F' ? Optional.of(sitcov.oracle.Failure.LEAVEROAD) : Optional.empty(), m != '-'));
         }
         return new MapRun(replication, driver, index, index, new MapId.Seeded(index), index, index, cell,
                 List.of(0.0, 0.0, 0.0), SAFE, faults);

@@ -34,9 +34,9 @@ class RunsCsvTest {
         RunSummary crash = new RunSummary(Outcome.TIMEOUT, 5000, List.of(0L, 1L, 2L, 0L, 1L), new Margins(
                 List.of(-0.05, inf, -0.1234, 0.5, 0.0, inf), List.of(inf, -0.05, -0.1234, 0.5, 0.0)));
         return new MapRun(0, "random", index, index * 3, id, 77, -5, 104, List.of(12.5, 200.0, 31.25), safe, List.of(
-                new FaultOutcome(Fault.TARGET_LANE_CHECK_SKIPPED, crash, true, true, 44, Detection.FOUND,
-                        Optional.of(AccidentType.LEAVEROAD), true),
-                new FaultOutcome(Fault.ONCOMING_AT_HALF_SPEED, safe, true, false, -1, Detection.REACHED_NO_EFFECT,
+                new FaultOutcome(new sitcov.judge.Variant.Seeded(Fault.TARGET_LANE_CHECK_SKIPPED), crash, true, true, 44, Detection.FOUND,
+                        Optional.of(sitcov.oracle.Failure.LEAVEROAD), true),
+                new FaultOutcome(new sitcov.judge.Variant.Seeded(Fault.ONCOMING_AT_HALF_SPEED), safe, true, false, -1, Detection.REACHED_NO_EFFECT,
                         Optional.empty(), false)));
     }
 

@@ -32,10 +32,10 @@ class CampaignVerdictTest {
                     Optional.empty(), Optional.empty());
         }
         RunSummary run = new RunSummary(Outcome.STOPPED_AT_VERDICT, ticks, Collections.nCopies(AccidentType.values().length, 0L));
-        MapRun map = new MapRun(t, driver, 0, 0, new MapId.Seeded(t), t, t, t, List.of(), run, List.of(new FaultOutcome(F, run,
-                true, true, 1, Detection.FOUND, Optional.of(AccidentType.TIMEOUT), true)));
+        MapRun map = new MapRun(t, driver, 0, 0, new MapId.Seeded(t), t, t, t, List.of(), run, List.of(new FaultOutcome(new sitcov.judge.Variant.Seeded(F), run,
+                true, true, 1, Detection.FOUND, Optional.of(sitcov.oracle.Failure.TIMEOUT), true)));
         return new CampaignTrial(F, driver, t, 7, "replication-" + t, true, ticks, ticks, 1, StopReason.FALSIFIED,
-                Optional.of(map), Optional.of(AccidentType.TIMEOUT));
+                Optional.of(map), Optional.of(sitcov.oracle.Failure.TIMEOUT));
     }
 
     private static List<String> verdict(List<CampaignTrial> trials, int n) {

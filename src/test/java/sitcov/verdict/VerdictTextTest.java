@@ -69,7 +69,7 @@ class VerdictTextTest {
 
     @Test
     void theUniformityHeadlineLeavesOutFaultsTooRareToTestAndNamesItsDenominator() {
-        var faults = sitcov.faults.Fault.values();
+        var faults = sitcov.experiment.ExperimentConfig.seeded(java.util.EnumSet.allOf(sitcov.faults.Fault.class)).toArray(sitcov.judge.Variant[]::new);
         List<SituationFaults.Uniformity> tests = List.of(
                 new SituationFaults.Uniformity(faults[0], 400, 200, 0.30, 0.10, 0.01),
                 new SituationFaults.Uniformity(faults[1], 400, 100, 0.10, 0.10, 0.50),

@@ -1,0 +1,150 @@
+package sitcov.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import sitcov.control.Channel;
+import sitcov.control.Command;
+import sitcov.control.Controller;
+import sitcov.control.ControllerFailure;
+import sitcov.control.Observation;
+import sitcov.protocol.JavaControllers;
+
+/**
+ * A controller written in Java and added in one class and one line: an experiment tests it, judges
+ * its variants against it, counts a variant's crashes as its failures, and refuses the builtin car's
+ * seeded faults, which cannot act on it.
+ */
+class RunWithAJavaControllerTest {
+    /** Keeps its lane by the ground truth it reads, at a walking pace; brakes for nothing. */
+    static final class LaneKeeper implements Controller {
+        @Override
+        public void step(Observation now, Command out) {
+            double offset = now.channel(Channel.LANE_OFFSET);
+            double error = now.channel(Channel.HEADING_ERROR);
+            out.speed(0.6).steering(Double.isNaN(offset) ? 0 : -error - 8 * offset);
+        }
+    }
+
+    /** The lane keeper with a planted bug: it throws at tick 20, a crash of a controller in process. */
+    static final class CrashesAtTwenty implements Controller {
+        private final LaneKeeper keeper = new LaneKeeper();
+
+        @Override
+        public void step(Observation now, Command out) {
+            if (now.tick() == 20) {
+                throw new IllegalStateException("planted bug");
+            }
+            keeper.step(now, out);
+        }
+    }
+
+    /** Fails to answer on its first tick, as a controller that gives no command in time does. */
+    static final class NeverAnswers implements Controller {
+        @Override
+        public void step(Observation now, Command out) {
+            throw new ControllerFailure(ControllerFailure.Kind.TIMEOUT, "no command");
+        }
+    }
+
+    @BeforeAll
+    static void register() {
+        JavaControllers.register("test-lane-keeper", run -> new LaneKeeper());
+        JavaControllers.register("test-crashes-at-20", run -> new CrashesAtTwenty());
+        JavaControllers.register("test-never-answers", run -> new NeverAnswers());
+    }
+
+    private static Path preset(Path dir, String extra) throws IOException {
+        Path p = dir.resolve("java.properties");
+        Files.writeString(p, "master_seed=3\ncandidates=6\nreplications=2\nbudget=ticks\ndrivers=coverage-filter,random\n"
+                + "grid=experiments/paper-grid.txt\ncontroller=java:test-lane-keeper\n" + extra);
+        return p;
+    }
+
+    private static List<String> rows(Path folder) throws IOException {
+        return Files.readAllLines(folder.resolve("runs.csv"));
+    }
+
+    @Test
+    void aVariantThatCrashesWhereTheReferenceDoesNotIsFoundOnEveryMapByItsControllerError(@TempDir Path dir)
+            throws IOException {
+        Path out = dir.resolve("out");
+        CliRunner r = CliRunner.run("run", preset(dir, "variants=java:test-crashes-at-20\n").toString(), "--out",
+                out.toString(), "--threads", "2");
+        assertEquals(ExitCode.OK, r.exitCode(), r.err() + r.out());
+        List<String> header = List.of(rows(out).get(0).split(","));
+        int variant = header.indexOf("fault");
+        int outcome = header.indexOf("outcome");
+        int detection = header.indexOf("detection");
+        int failure = header.indexOf("new_accident");
+        int reason = header.indexOf("controller_failure");
+        int crashed = 0;
+        long referenceTicks = -1;
+        for (String line : rows(out).subList(1, rows(out).size())) {
+            String[] cells = line.split(",", -1);
+            if (cells[variant].equals("NONE")) {
+                assertFalse(cells[outcome].startsWith("CONTROLLER"), "the reference never crashes: " + line);
+                referenceTicks = Long.parseLong(cells[header.indexOf("ticks")]);
+                continue;
+            }
+            assertEquals("1", cells[variant], "the only variant takes id 1");
+            if (referenceTicks <= 20) {
+                // the reference arrived before tick 20: so did the variant, driving exactly as it does
+                assertEquals("REACHED_NO_EFFECT", cells[detection], line);
+                continue;
+            }
+            crashed++;
+            assertEquals("CONTROLLER_ERROR", cells[outcome], line);
+            assertEquals("21", cells[header.indexOf("ticks")], "it crashed in tick 20, the 21st: " + line);
+            assertEquals("FOUND", cells[detection], line);
+            assertEquals("CONTROLLER_ERROR", cells[failure], line);
+            assertTrue(cells[reason].contains("planted bug"), "the reason is kept: " + line);
+        }
+        assertTrue(crashed >= 6, "the variant crashed wherever the reference drove past tick 20, got " + crashed);
+        String verdict = Files.readString(out.resolve("verdict.txt"));
+        assertTrue(verdict.startsWith("Controller failures"), verdict);
+        assertTrue(verdict.contains("variant 1 (test-crashes-at-20) on " + crashed + " (" + crashed
+                + " CONTROLLER_ERROR)"), verdict);
+        String manifest = Files.readString(out.resolve("manifest.properties"));
+        assertTrue(manifest.contains("variants=java:test-crashes-at-20\n") && !manifest.contains("faults="), manifest);
+    }
+
+    @Test
+    void withoutVariantsTheExperimentSeeksTheReferencesOwnFailures(@TempDir Path dir) throws IOException {
+        Path out = dir.resolve("out");
+        CliRunner r = CliRunner.run("run", preset(dir, "").toString(), "--out", out.toString(), "--threads", "1");
+        assertEquals(ExitCode.OK, r.exitCode(), r.err() + r.out());
+        assertTrue(Files.readString(out.resolve("manifest.properties")).contains("variants=none\n"));
+        assertTrue(rows(out).stream().skip(1).allMatch(l -> l.split(",")[11].equals("NONE")),
+                "only reference rows: there is no variant");
+        // the lane keeper brakes for nothing and knows no junction: it fails on its own, and each is listed
+        List<String> own = Files.readAllLines(out.resolve("own-failures.csv"));
+        assertTrue(own.size() > 1, "its own failures are listed: " + own);
+    }
+
+    @Test
+    void theBuiltinCarsSeededFaultsAreRefusedForAnotherController(@TempDir Path dir) throws IOException {
+        CliRunner r = CliRunner.run("run", preset(dir, "faults=14\n").toString(), "--out", dir.resolve("out").toString());
+        assertEquals(ExitCode.USAGE, r.exitCode());
+        assertTrue(r.err().contains("seeded faults of the builtin car") && r.err().contains("variants=none"), r.err());
+        assertFalse(Files.exists(dir.resolve("out")), "nothing was written");
+    }
+
+    @Test
+    void aReferenceThatFailsOnEveryMapSaysSoFirstAndExitsNonZero(@TempDir Path dir) throws IOException {
+        Path out = dir.resolve("out");
+        CliRunner r = CliRunner.run("run", preset(dir, "").toString(), "--out", out.toString(), "--controller",
+                "java:test-never-answers");
+        assertEquals(ExitCode.FAILURE, r.exitCode(), r.out());
+        assertTrue(Files.readString(out.resolve("verdict.txt")).startsWith("THE REFERENCE CONTROLLER FAILED ON EVERY MAP"));
+        assertTrue(r.err().contains("failed on every map"), r.err());
+    }
+}

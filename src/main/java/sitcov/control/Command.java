@@ -18,7 +18,7 @@ public final class Command {
     private int releaseCount;
     private int[] claims = new int[4];
     private int claimCount;
-    private final SelfReport report = new SelfReport();
+    private SelfReport report = new SelfReport();
 
     /** Clears everything: no speed change, straight on, no requests, nothing reported. */
     public void clear() {

@@ -14,17 +14,18 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.PriorityQueue;
-import java.util.function.Predicate;
+import java.util.Set;
 
 /**
  * A deep copy of a model's object graph, the way MASON checkpoints a model, but in memory and
  * without serialization: each of the model's own objects is copied field by field (no constructor
  * runs), arrays element by element, the JDK's mutable collections rebuilt around copied elements,
- * and values that never change (enums, strings, boxed numbers, records, and whatever the caller
- * names as immutable, such as the map) shared. Objects reached twice are copied once, so the copy
- * has the original's shape, and nothing of the copy is shared with the original that either could
- * change. What it cannot copy faithfully (a lambda that captured state, a JDK object it does not
- * know, a read-only view of a collection) it refuses, naming it, rather than copy it wrongly.
+ * and values that never change (enums, strings, boxed numbers, records of values, and the types the
+ * caller names as immutable, such as the map) shared. Objects reached twice are copied once, so the
+ * copy has the original's shape, and nothing of the copy is shared with the original that either
+ * could change. What it cannot copy faithfully (a lambda that captured state, a JDK object it does
+ * not know, a read-only view of a collection, a final field, which the JDK may refuse to let
+ * reflection write) it refuses, naming it, rather than copy it wrongly.
  */
 public final class ModelCopy {
     private static final ClassValue<Plan> PLANS = new ClassValue<>() {
@@ -43,11 +44,12 @@ public final class ModelCopy {
     }
 
     /**
-     * Which classes copies share rather than copy: values (enums, strings, boxed numbers, records)
-     * and the classes {@code immutable} accepts. Make one and keep it: it remembers each class's answer.
+     * Which classes copies share rather than copy: values (enums, strings, boxed numbers, records of
+     * values) and exactly the classes named {@code immutable}, not their subclasses nor their
+     * neighbours in a package. Make one and keep it: it remembers each class's answer.
      */
     public static final class Sharing {
-        private final Predicate<Class<?>> immutable;
+        private final Set<Class<?>> immutable;
         private final ClassValue<Kind> kinds = new ClassValue<>() {
             @Override
             protected Kind computeValue(Class<?> type) {
@@ -55,8 +57,8 @@ public final class ModelCopy {
             }
         };
 
-        public Sharing(Predicate<Class<?>> immutable) {
-            this.immutable = immutable;
+        public Sharing(Set<Class<?>> immutable) {
+            this.immutable = Set.copyOf(immutable);
         }
     }
 
@@ -64,8 +66,8 @@ public final class ModelCopy {
     private enum Kind {
         SHARED, ARRAY, JDK, MODEL;
 
-        static Kind of(Class<?> type, Predicate<Class<?>> immutable) {
-            if (isValue(type) || immutable.test(type)) {
+        static Kind of(Class<?> type, Set<Class<?>> immutable) {
+            if (isValue(type) || immutable.contains(type)) {
                 return SHARED;
             }
             if (type.isRecord()) {
@@ -86,7 +88,7 @@ public final class ModelCopy {
                 return JDK;
             }
             if (type.isHidden() || type.isSynthetic()) {
-                if (PLANS.get(type).fields.length == 0) {
+                if (Plan.instanceFields(type).isEmpty()) {
                     return SHARED; // a lambda that captured nothing is a pure function
                 }
                 throw new IllegalStateException("cannot checkpoint " + type.getName()
@@ -125,9 +127,9 @@ public final class ModelCopy {
         if (kind == Kind.JDK) {
             return copyJdk(original, type);
         }
+        Plan plan = PLANS.get(type);
         Object copy = Plan.allocate(type);
         copies.put(original, copy);
-        Plan plan = PLANS.get(type);
         try {
             for (Field f : plan.fields) {
                 Class<?> t = f.getType();
@@ -256,20 +258,35 @@ public final class ModelCopy {
     private record Plan(Field[] fields) {
         private static final sun.misc.Unsafe UNSAFE = unsafe();
 
+        /**
+         * The plan for {@code type}, which must have no final instance field: writing one takes deep
+         * reflection that JDK 26 warns about and later JDKs refuse (JEP 500), so the model keeps what
+         * a checkpoint copies in fields that are not final.
+         */
         static Plan of(Class<?> type) {
+            List<Field> fields = instanceFields(type);
+            for (Field f : fields) {
+                if (Modifier.isFinal(f.getModifiers())) {
+                    throw new IllegalStateException("cannot checkpoint " + type.getName() + ": its field "
+                            + f.getDeclaringClass().getSimpleName() + "." + f.getName() + " is final, and a copy"
+                            + " would have to write it; make the field non-final, or share its class if it never changes");
+                }
+                f.setAccessible(true);
+            }
+            return new Plan(fields.toArray(Field[]::new));
+        }
+
+        static List<Field> instanceFields(Class<?> type) {
             List<Field> fields = new ArrayList<>();
             // a JDK superclass's fields (an AbstractList's modification count) are its own bookkeeping
             for (Class<?> c = type; c != null && !c.getName().startsWith("java."); c = c.getSuperclass()) {
                 for (Field f : c.getDeclaredFields()) {
                     if (!Modifier.isStatic(f.getModifiers())) {
-                        if (!type.isHidden()) {
-                            f.setAccessible(true);
-                        }
                         fields.add(f);
                     }
                 }
             }
-            return new Plan(fields.toArray(Field[]::new));
+            return fields;
         }
 
         /** An instance whose fields the copy then fills in: no constructor may run, as in deserialization. */

@@ -18,8 +18,8 @@ public final class RandomStreams {
     private static final long FNV_PRIME = 0x100000001b3L;
     private static final long GOLDEN_GAMMA = 0x9e3779b97f4a7c15L;
 
-    private final long root;
-    private final Map<String, RandomGenerator> streams = new HashMap<>();
+    private long root;
+    private Map<String, RandomGenerator> streams = new HashMap<>();
 
     public RandomStreams(long root) {
         this.root = root;

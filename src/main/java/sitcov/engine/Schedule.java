@@ -19,9 +19,9 @@ public final class Schedule {
     /** The time before any tick has run. */
     public static final long BEFORE_SIMULATION = -1;
 
-    private final RandomGenerator shuffle;
-    private final PriorityQueue<Event> queue = new PriorityQueue<>();
-    private final List<Event> due = new ArrayList<>();
+    private RandomGenerator shuffle;
+    private PriorityQueue<Event> queue = new PriorityQueue<>();
+    private List<Event> due = new ArrayList<>();
     private long time = BEFORE_SIMULATION;
     private long nextSequence;
     /** Bumped by {@link #clear()} so a tick in progress knows to stop. */
@@ -116,7 +116,7 @@ public final class Schedule {
             throw new IllegalArgumentException("cannot schedule an event at tick " + tick
                     + ": the schedule is at tick " + time + ", so the earliest tick is " + (time + 1));
         }
-        return new Event(tick, ordering, nextSequence++, interval, agent);
+        return new Event(this, tick, ordering, nextSequence++, interval, agent);
     }
 
     /** Fisher–Yates shuffle of each run of equal ordering in {@code due}, which arrives sorted. */
@@ -138,16 +138,22 @@ public final class Schedule {
         }
     }
 
-    /** A scheduled agent; mutable only inside the schedule, where it is re-queued each interval. */
-    private final class Event implements Stoppable, Comparable<Event> {
+    /**
+     * A scheduled agent; mutable only inside the schedule, where it is re-queued each interval.
+     * Static, with its schedule in a field of its own: an inner class's hidden reference to its
+     * outer object is final, and a checkpoint copies events.
+     */
+    private static final class Event implements Stoppable, Comparable<Event> {
+        private Schedule schedule;
         private long tick;
-        private final int ordering;
-        private final long sequence;
-        private final long interval;
-        private final Steppable agent;
+        private int ordering;
+        private long sequence;
+        private long interval;
+        private Steppable agent;
         private boolean stopped;
 
-        private Event(long tick, int ordering, long sequence, long interval, Steppable agent) {
+        private Event(Schedule schedule, long tick, int ordering, long sequence, long interval, Steppable agent) {
+            this.schedule = schedule;
             this.tick = tick;
             this.ordering = ordering;
             this.sequence = sequence;
@@ -171,7 +177,7 @@ public final class Schedule {
         public void stop() {
             if (!stopped) {
                 stopped = true;
-                queue.remove(this);
+                schedule.queue.remove(this);
             }
         }
     }

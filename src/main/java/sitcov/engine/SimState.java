@@ -12,8 +12,8 @@ public final class SimState implements LongSupplier {
     /** The stream that orders agents of equal ordering within a tick. */
     public static final String SCHEDULE_STREAM = "schedule";
 
-    private final RandomStreams streams;
-    private final Schedule schedule;
+    private RandomStreams streams;
+    private Schedule schedule;
 
     public SimState(long seed) {
         this.streams = new RandomStreams(seed);

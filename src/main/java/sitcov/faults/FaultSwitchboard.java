@@ -21,14 +21,14 @@ import java.util.function.LongSupplier;
 public final class FaultSwitchboard {
     private static final int N = Fault.values().length;
 
-    private final EnumSet<Fault> active;
-    private final LongSupplier clock;
-    private final boolean[] reached;
-    private final long[] effectiveCount;
-    private final long[] firstEffective;
-    private final EnumSet<Fault> shadowed;
-    private final long[] shadowReached;
-    private final long[] departed;
+    private EnumSet<Fault> active;
+    private LongSupplier clock;
+    private boolean[] reached;
+    private long[] effectiveCount;
+    private long[] firstEffective;
+    private EnumSet<Fault> shadowed;
+    private long[] shadowReached;
+    private long[] departed;
     private boolean firstEffectsOnly;
 
     public FaultSwitchboard(Set<Fault> active, LongSupplier clock) {

@@ -8,6 +8,8 @@ import sitcov.engine.SimState;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
 import sitcov.faults.Shadow;
+import sitcov.geom.Box;
+import sitcov.geom.CellIndex;
 import sitcov.oracle.AccidentDetector;
 import sitcov.oracle.Margins;
 import sitcov.oracle.NearMisses;
@@ -15,6 +17,8 @@ import sitcov.oracle.RunResult;
 import sitcov.vehicles.BuiltinCar;
 import sitcov.vehicles.Scene;
 import sitcov.vehicles.Telemetry;
+import sitcov.world.Layout;
+import sitcov.world.RoadNetwork;
 import sitcov.world.WorldMap;
 
 /**
@@ -22,18 +26,24 @@ import sitcov.world.WorldMap;
  * a tick per frame. The map, the internal seed and the faults fix it bit for bit.
  */
 public final class LiveRun {
-    /** What a copy shares with its run: the map, and everything of it, never changes. */
-    private static final ModelCopy.Sharing SHARED = new ModelCopy.Sharing(type -> type.getPackageName().equals("sitcov.world"));
+    /**
+     * What a copy shares with its run, as nothing changes it once made: the map and its road network,
+     * and the geometry's values. The records of values the map holds are shared without naming; any
+     * other class is copied, and one a copy cannot write (a final field) is refused.
+     */
+    private static final ModelCopy.Sharing SHARED = new ModelCopy.Sharing(Set.of(
+            WorldMap.class, Layout.class, RoadNetwork.class, Box.class, CellIndex.class));
 
-    private final WorldMap map;
-    private final long internalSeed;
+    // not final, as in every class a checkpoint copies: a copy writes them (ModelCopy)
+    private WorldMap map;
+    private long internalSeed;
     private Set<Fault> faults;
-    private final SimState state;
-    private final FaultSwitchboard switchboard;
-    private final Scene scene;
-    private final AccidentDetector detector;
-    private final NearMisses nearMisses;
-    private final boolean copyable;
+    private SimState state;
+    private FaultSwitchboard switchboard;
+    private Scene scene;
+    private AccidentDetector detector;
+    private NearMisses nearMisses;
+    private boolean copyable;
     private boolean ended;
 
     /** A run of the builtin car with {@code faults} switched on. */

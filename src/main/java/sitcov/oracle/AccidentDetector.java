@@ -25,13 +25,13 @@ public final class AccidentDetector implements Steppable {
     /** After every vehicle has moved. */
     public static final int ORDERING = 1;
 
-    private final Telemetry run;
-    private final boolean[] touchingParked;
-    private final boolean[] touchingMoving;
-    private final List<Accident> accidents = new ArrayList<>();
-    private final Map<Blame, Integer> excused = new EnumMap<>(Blame.class);
-    private final CentreLine centreLine;
-    private final CentreLineExcuse centreLineExcuse;
+    private Telemetry run;
+    private boolean[] touchingParked;
+    private boolean[] touchingMoving;
+    private List<Accident> accidents = new ArrayList<>();
+    private Map<Blame, Integer> excused = new EnumMap<>(Blame.class);
+    private CentreLine centreLine;
+    private CentreLineExcuse centreLineExcuse;
     private boolean offRoad;
     private boolean overCentreLine;
     private Outcome outcome;

@@ -17,8 +17,8 @@ import sitcov.world.RoadNetwork;
  * car's heading — so a car turned sharply across its road is still judged against that road.
  */
 final class CentreLine {
-    private final RoadNetwork network;
-    private final List<Marking> centreStrips;
+    private RoadNetwork network;
+    private List<Marking> centreStrips;
 
     CentreLine(RoadNetwork network) {
         this.network = network;

@@ -64,15 +64,15 @@ final class CentreLineExcuse {
     private static final double HALF_PARKED = Dimensions.CAR_LENGTH / 2;
 
     /** Each junction's square grown by the margin on every side. */
-    private final Rect[] junctionZones;
+    private Rect[] junctionZones;
     /** Each junction's square grown by the leaving margin on every side, and its centre. */
-    private final Rect[] leavingZones;
-    private final double[] junctionX;
-    private final double[] junctionY;
-    private final Road[] roads;
-    private final double[] parkedX;
-    private final double[] parkedY;
-    private final Axis[] parkedAxis;
+    private Rect[] leavingZones;
+    private double[] junctionX;
+    private double[] junctionY;
+    private Road[] roads;
+    private double[] parkedX;
+    private double[] parkedY;
+    private Axis[] parkedAxis;
 
     CentreLineExcuse(RoadNetwork network, List<ParkedCar> parked) {
         List<Junction> junctions = network.junctions();

@@ -65,41 +65,41 @@ public final class NearMisses {
     private static final double EPS = 1e-9;
     private static final double HALF_SQUARE = sitcov.world.Dimensions.JUNCTION_SIZE / 2;
 
-    private final double[] least = new double[NearMiss.values().length];
-    private final long[] leastTick = new long[NearMiss.values().length];
+    private double[] least = new double[NearMiss.values().length];
+    private long[] leastTick = new long[NearMiss.values().length];
     private double otherCarRho = Double.POSITIVE_INFINITY;
     private double timeoutRho = Double.NaN;
 
-    private final RoadEdges roadEdges;
-    private final RoadNetwork network;
-    private final Road[] roads;
-    private final Junction[] junctions;
-    private final CentreLine centreLine;
-    private final CentreLineExcuse centreLineExcuse;
+    private RoadEdges roadEdges;
+    private RoadNetwork network;
+    private Road[] roads;
+    private Junction[] junctions;
+    private CentreLine centreLine;
+    private CentreLineExcuse centreLineExcuse;
 
     // parked cars: centre, forward axis, half sizes
-    private final double[] parkedX;
-    private final double[] parkedY;
-    private final double[] parkedFx;
-    private final double[] parkedFy;
-    private final double[] parkedHl;
-    private final double[] parkedHw;
+    private double[] parkedX;
+    private double[] parkedY;
+    private double[] parkedFx;
+    private double[] parkedFy;
+    private double[] parkedHl;
+    private double[] parkedHw;
 
-    private final boolean[] touching;
-    private final boolean[] excused;
+    private boolean[] touching;
+    private boolean[] excused;
 
     // T-junction squares, and who is in them: the car, then moving vehicle i at [i * squares + j]
-    private final double[] squareX;
-    private final double[] squareY;
-    private final boolean[] carIn;
+    private double[] squareX;
+    private double[] squareY;
+    private boolean[] carIn;
     /** Per square, whether the car entered it this tick (scratch for {@link #watchSquares}). */
-    private final boolean[] carEnters;
-    private final long[] carLeft;
-    private final boolean[] otherIn;
+    private boolean[] carEnters;
+    private long[] carLeft;
+    private boolean[] otherIn;
     /** Per moving vehicle, how many squares it is in ({@code otherIn}'s trues in its row). */
-    private final int[] inCount;
-    private final SquareGrid squareGrid;
-    private final long[] otherLeft;
+    private int[] inCount;
+    private SquareGrid squareGrid;
+    private long[] otherLeft;
 
     public NearMisses(Telemetry run) {
         Arrays.fill(least, Double.POSITIVE_INFINITY);

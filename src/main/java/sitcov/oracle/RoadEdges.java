@@ -16,19 +16,19 @@ import sitcov.geom.Rect;
  * asking allocates nothing, and one instance serves one run at a time.
  */
 final class RoadEdges {
-    private final double[] minX;
-    private final double[] minY;
-    private final double[] maxX;
-    private final double[] maxY;
+    private double[] minX;
+    private double[] minY;
+    private double[] maxX;
+    private double[] maxY;
     /** The boundary's pieces: from (x1, y1) to (x2, y2), each along x or y. */
-    private final double[] x1;
-    private final double[] y1;
-    private final double[] x2;
-    private final double[] y2;
+    private double[] x1;
+    private double[] y1;
+    private double[] x2;
+    private double[] y2;
     /** The road that last held a point {@link #distanceToRoad} was asked about, or −1: tried first. */
     private int lastHolding = -1;
     /** Scratch: each piece's squared distance from the footprint's centre this tick. */
-    private final double[] centreDistance;
+    private double[] centreDistance;
 
     RoadEdges(List<Rect> surfaces) {
         int n = surfaces.size();

@@ -18,7 +18,7 @@ final class SquareGrid {
     private static final double CELL = 10;
     private static final double MARGIN = 0.01;
 
-    private final CellIndex index;
+    private CellIndex index;
 
     SquareGrid(double[] squareX, double[] squareY) {
         List<Rect> reach = new ArrayList<>(squareX.length);

@@ -26,13 +26,13 @@ public final class AutonomousCar implements Bodied, Steppable {
     /** Ticks after which another vehicle's hold on a junction is stale, and the car under test is given it. */
     static final long PATIENCE = 30;
 
-    private final Scene scene;
-    private final Body body;
-    private final Controller controller;
-    private final SceneObservation observation;
-    private final Command command = new Command();
-    private final SelfReport report = new SelfReport();
-    private final TargetArrival arrival;
+    private Scene scene;
+    private Body body;
+    private Controller controller;
+    private SceneObservation observation;
+    private Command command = new Command();
+    private SelfReport report = new SelfReport();
+    private TargetArrival arrival;
     private double speedChange;
     private double steering;
     private boolean clamped;

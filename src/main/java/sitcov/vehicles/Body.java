@@ -10,7 +10,7 @@ import sitcov.geom.Box;
  * follows the inside of a bend rather than swinging its tail out across the kerb.
  */
 final class Body {
-    private final double pivot;
+    private double pivot;
     private double x;
     private double y;
     private double heading;

@@ -40,25 +40,25 @@ public final class BuiltinCar implements Controller, Bodied {
     /** A lane centre seen further than this to the side, outside an overtake, is not believed. */
     static final double IMPLAUSIBLE_OFFSET = 1.3;
 
-    private final RoadNetwork roads;
-    private final Target target;
-    private final FaultSwitchboard faults;
-    private final Body body;
+    private RoadNetwork roads;
+    private Target target;
+    private FaultSwitchboard faults;
+    private Body body;
     private Observation now;
-    private final JunctionRequests rightOfWay = new JunctionRequests();
-    private final MarkingCamera camera;
+    private JunctionRequests rightOfWay = new JunctionRequests();
+    private MarkingCamera camera;
     /** A camera for each camera fault a fault-free run watches from the shadows, made when first needed. */
-    private final MarkingCamera[] shadowCameras = new MarkingCamera[CameraFaults.CAMERA.size()];
-    private final Lidar lidar;
-    private final TrafficSensor traffic = new TrafficSensor();
-    private final Waypoints waypoints;
-    private final JunctionDriver junctions;
-    private final Overtaker overtaker;
-    private final TargetSeeker targetSeeker;
-    private final Intent intent = new Intent();
+    private MarkingCamera[] shadowCameras = new MarkingCamera[CameraFaults.CAMERA.size()];
+    private Lidar lidar;
+    private TrafficSensor traffic = new TrafficSensor();
+    private Waypoints waypoints;
+    private JunctionDriver junctions;
+    private Overtaker overtaker;
+    private TargetSeeker targetSeeker;
+    private Intent intent = new Intent();
     private Compass lane;
     private LaneEstimate estimate = LaneEstimate.NOTHING_SEEN;
-    private final LaneMemory laneMemory = new LaneMemory();
+    private LaneMemory laneMemory = new LaneMemory();
     private double laneCentre;
 
     /**

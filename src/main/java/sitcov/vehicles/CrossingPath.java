@@ -49,14 +49,14 @@ final class CrossingPath {
     private static final double MIN_STRAIGHT = 0.05;
     private static final double ROTATION_STEP = 15;
 
-    private final double axle;
-    private final double[] xs;
-    private final double[] ys;
-    private final double[] headings;
+    private double axle;
+    private double[] xs;
+    private double[] ys;
+    private double[] headings;
     /** The unit vectors of the headings, worked out once: the car steers by them every tick of a crossing. */
-    private final double[] headingDx;
-    private final double[] headingDy;
-    private final boolean[] onTheSpot;
+    private double[] headingDx;
+    private double[] headingDy;
+    private boolean[] onTheSpot;
     private int progress;
 
     private CrossingPath(double axle, double[] xs, double[] ys, double[] headings, boolean[] onTheSpot) {

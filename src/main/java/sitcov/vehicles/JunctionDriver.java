@@ -42,11 +42,11 @@ final class JunctionDriver {
      */
     static final double WAIT_SHORT_OF_SQUARE = 2.5;
 
-    private final BuiltinCar car;
-    private final FaultSwitchboard faults;
-    private final RandomGenerator decisions;
-    private final Route route;
-    private final int[][] exitsTaken;
+    private BuiltinCar car;
+    private FaultSwitchboard faults;
+    private RandomGenerator decisions;
+    private Route route;
+    private int[][] exitsTaken;
     private int held = -1;
     private int reserved = -1;
     private Compass reservedExit;

@@ -11,8 +11,8 @@ import java.util.Arrays;
 public final class JunctionOccupancy {
     private static final int FREE = -1;
 
-    private final int[] holder;
-    private final long[] since;
+    private int[] holder;
+    private long[] since;
 
     public JunctionOccupancy(int junctions) {
         holder = new int[junctions];

@@ -25,21 +25,21 @@ final class Lidar {
     private static final int RAYS = (int) (ARC / ANGULAR_STEP);
     private static final int MAX_OBJECTS = 64;
 
-    private final Box[] objects = new Box[MAX_OBJECTS];
-    private final boolean[] objectParked = new boolean[MAX_OBJECTS];
-    private final double[] interval = new double[2];
-    private final int[] firstRay = new int[MAX_OBJECTS];
-    private final int[] lastRay = new int[MAX_OBJECTS];
-    private final RoadReach roadReach;
+    private Box[] objects = new Box[MAX_OBJECTS];
+    private boolean[] objectParked = new boolean[MAX_OBJECTS];
+    private double[] interval = new double[2];
+    private int[] firstRay = new int[MAX_OBJECTS];
+    private int[] lastRay = new int[MAX_OBJECTS];
+    private RoadReach roadReach;
     /** Four lanes, and the heading fault 18 sweeps along. */
-    private final RayFan.Cache fans = new RayFan.Cache(6);
+    private RayFan.Cache fans = new RayFan.Cache(6);
 
     /**
      * What the last full sweep looked at, and its hits, still in the buffers: parked cars never move
      * and a vehicle's footprint is a new object once it has moved, so a sweep from the same place, along
      * the same bearing and frame, over the same objects in the same order, sees the same.
      */
-    private final Snapshot swept = new Snapshot();
+    private Snapshot swept = new Snapshot();
     private int sweptHits;
 
     /**
@@ -47,18 +47,18 @@ final class Lidar {
      * cars of the place and bearing below: a car standing still (waiting, or stuck) sweeps the same
      * parked cars tick after tick while traffic passes, and only the traffic need be swept again.
      */
-    private final double[] parkedBest = new double[RAYS];
-    private final boolean[] parkedOnRoad = new boolean[RAYS];
-    private final Snapshot parkedSwept = new Snapshot();
+    private double[] parkedBest = new double[RAYS];
+    private boolean[] parkedOnRoad = new boolean[RAYS];
+    private Snapshot parkedSwept = new Snapshot();
     /** The span of rays the parked cars of {@link #parkedSwept} cover (empty: lowest above highest). */
     private int parkedLowest = RAYS;
     private int parkedHighest = -1;
 
-    private final double[] best = new double[RAYS];
-    private final boolean[] byVehicle = new boolean[RAYS];
-    private final double[] hitU = new double[RAYS];
-    private final double[] hitV = new double[RAYS];
-    private final boolean[] hitParked = new boolean[RAYS];
+    private double[] best = new double[RAYS];
+    private boolean[] byVehicle = new boolean[RAYS];
+    private double[] hitU = new double[RAYS];
+    private double[] hitV = new double[RAYS];
+    private boolean[] hitParked = new boolean[RAYS];
     private int hits;
     private double originX;
     private double originY;
@@ -262,8 +262,8 @@ final class Lidar {
 
     /** Where a sweep was made from and what it looked at, object by object (by identity). */
     private static final class Snapshot {
-        private final Box[] objects = new Box[MAX_OBJECTS];
-        private final boolean[] parked = new boolean[MAX_OBJECTS];
+        private Box[] objects = new Box[MAX_OBJECTS];
+        private boolean[] parked = new boolean[MAX_OBJECTS];
         private int count = -1;
         private double x;
         private double y;

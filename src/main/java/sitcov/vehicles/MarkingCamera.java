@@ -28,22 +28,22 @@ final class MarkingCamera {
     static final double SAME_LINE = 0.3;
     static final double FARTHEST_LINE = 4.5;
 
-    private final RoadNetwork network;
-    private final Rect[] strips = new Rect[MAX_CANDIDATES];
-    private final double[] interval = new double[2];
-    private final double[] stripLo = new double[MAX_CANDIDATES];
-    private final double[] stripHi = new double[MAX_CANDIDATES];
-    private final double[] seen = new double[MAX_RAYS];
+    private RoadNetwork network;
+    private Rect[] strips = new Rect[MAX_CANDIDATES];
+    private double[] interval = new double[2];
+    private double[] stripLo = new double[MAX_CANDIDATES];
+    private double[] stripHi = new double[MAX_CANDIDATES];
+    private double[] seen = new double[MAX_RAYS];
     /** Per ray of the fan in hand, its first marking hit (NaN: none), found strip by strip. */
-    private final double[] nearest = new double[MAX_RAYS];
+    private double[] nearest = new double[MAX_RAYS];
     /** The last look with each of the (at most two: faulty and standard) settings; the one in hand. */
-    private final Look[] looks = new Look[2];
+    private Look[] looks = new Look[2];
     private Look look;
     /** The look the car kept, for viewers. */
     private Look kept;
-    private final RoadReach roadReach;
+    private RoadReach roadReach;
     /** Four lanes, with the faulty and the standard settings. */
-    private final RayFan.Cache fans = new RayFan.Cache(16);
+    private RayFan.Cache fans = new RayFan.Cache(16);
 
     MarkingCamera(RoadNetwork network) {
         this.network = network;
@@ -310,9 +310,9 @@ final class MarkingCamera {
 
     /** A look with one camera's settings: where it was taken from, what it estimated, where its rays met a marking. */
     private static final class Look {
-        private final CameraSettings settings;
-        private final double[] hitX = new double[MAX_RAYS];
-        private final double[] hitY = new double[MAX_RAYS];
+        private CameraSettings settings;
+        private double[] hitX = new double[MAX_RAYS];
+        private double[] hitY = new double[MAX_RAYS];
         private int hitCount;
         private double x = Double.NaN;
         private double y = Double.NaN;

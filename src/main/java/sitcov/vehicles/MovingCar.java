@@ -45,11 +45,11 @@ public final class MovingCar implements Bodied, Steppable {
     /** Its rear axle, which it turns about, is this far behind its front. */
     public static final double REAR_AXLE = 3.5;
 
-    private final int id;
-    private final Scene scene;
-    private final RandomGenerator choices;
-    private final RandomGenerator respawns;
-    private final Body body;
+    private int id;
+    private Scene scene;
+    private RandomGenerator choices;
+    private RandomGenerator respawns;
+    private Body body;
     private boolean active = true;
     private Compass lane;
     private int held = -1;
@@ -63,7 +63,7 @@ public final class MovingCar implements Bodied, Steppable {
     private boolean passing;
     private double passEnd;
     private int stoppedFor;
-    private final Clearance clearance = new Clearance();
+    private Clearance clearance = new Clearance();
 
     MovingCar(int id, Scene scene, StartPose start, RandomGenerator choices, RandomGenerator respawns) {
         this.id = id;

@@ -36,10 +36,10 @@ final class Overtaker {
     /** A Target closer than the tight return past the row, but at least this far, is turned in to sharply. */
     static final double SHARP_RETURN = 1.0;
 
-    private final BuiltinCar car;
-    private final FaultSwitchboard faults;
-    private final SqueezeIn squeezeIn;
-    private final ParkedCarSightings sightings;
+    private BuiltinCar car;
+    private FaultSwitchboard faults;
+    private SqueezeIn squeezeIn;
+    private ParkedCarSightings sightings;
     private OvertakingStage stage = OvertakingStage.NOT_OVERTAKING;
     private int waypoint;
     private double oppositeStart = Double.NaN;

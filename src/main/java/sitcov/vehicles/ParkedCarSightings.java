@@ -16,8 +16,8 @@ final class ParkedCarSightings {
     /** A car parked on the other side less than this far behind the car's front still stands beside it. */
     static final double BESIDE = 2.5;
 
-    private final BuiltinCar car;
-    private final FaultSwitchboard faults;
+    private BuiltinCar car;
+    private FaultSwitchboard faults;
 
     ParkedCarSightings(BuiltinCar car, FaultSwitchboard faults) {
         this.car = car;

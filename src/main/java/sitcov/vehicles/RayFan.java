@@ -18,17 +18,17 @@ final class RayFan {
         FROM_THE_RIGHT
     }
 
-    private final Form form;
-    private final double bearing;
-    private final double first;
-    private final double last;
-    private final double step;
-    private final double[] dx;
-    private final double[] dy;
-    private final double[] slope;
-    private final boolean sloped;
-    private final int slopedFrom;
-    private final int slopedTo;
+    private Form form;
+    private double bearing;
+    private double first;
+    private double last;
+    private double step;
+    private double[] dx;
+    private double[] dy;
+    private double[] slope;
+    private boolean sloped;
+    private int slopedFrom;
+    private int slopedTo;
 
     private RayFan(Form form, double bearing, double first, double last, double step) {
         this.form = form;
@@ -155,7 +155,7 @@ final class RayFan {
 
     /** The few fans one sensor sweeps; a fan not kept is made and replaces the oldest. */
     static final class Cache {
-        private final RayFan[] fans;
+        private RayFan[] fans;
         private int next;
 
         Cache(int size) {

@@ -10,7 +10,7 @@ import java.util.RandomAccess;
  * it copies with the list.
  */
 final class ReadOnlyView<T> extends AbstractList<T> implements RandomAccess {
-    private final List<T> viewed;
+    private List<T> viewed;
 
     ReadOnlyView(List<T> viewed) {
         this.viewed = viewed;

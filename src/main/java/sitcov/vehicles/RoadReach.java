@@ -11,12 +11,12 @@ import sitcov.world.RoadNetwork;
 final class RoadReach {
     private static final int MAX_ROADS = 64;
 
-    private final RoadNetwork network;
-    private final Rect[] roads = new Rect[MAX_ROADS];
-    private final double[] interval = new double[2];
-    private final double[] start = new double[MAX_ROADS];
-    private final double[] end = new double[MAX_ROADS];
-    private final Rect[] holding = new Rect[MAX_ROADS];
+    private RoadNetwork network;
+    private Rect[] roads = new Rect[MAX_ROADS];
+    private double[] interval = new double[2];
+    private double[] start = new double[MAX_ROADS];
+    private double[] end = new double[MAX_ROADS];
+    private Rect[] holding = new Rect[MAX_ROADS];
     private int n;
     private int nHolding;
 

@@ -20,7 +20,7 @@ final class Route {
     /** Extra metres charged for turning round in a junction, so a U-turn is chosen only when it saves that much. */
     static final double U_TURN_COST = 20;
 
-    private final double[][] toTarget;
+    private double[][] toTarget;
 
     private Route(double[][] toTarget) {
         this.toTarget = toTarget;

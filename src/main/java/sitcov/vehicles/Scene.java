@@ -26,19 +26,19 @@ public final class Scene {
     /** Vehicles step at ordering 0; whoever watches them (the accident detector) steps after, at 1. */
     public static final int VEHICLE_ORDERING = 0;
 
-    private final WorldMap map;
-    private final RoadNetwork network;
-    private final List<ParkedCar> parkedCars;
-    private final List<Box> parkedBodies;
-    private final JunctionOccupancy occupancy;
-    private final SimState state;
+    private WorldMap map;
+    private RoadNetwork network;
+    private List<ParkedCar> parkedCars;
+    private List<Box> parkedBodies;
+    private JunctionOccupancy occupancy;
+    private SimState state;
     // unmodifiable, set once the scene is built: callers ask for them many times a tick
     private List<MovingCar> movingCars = List.of();
     private List<Vehicle> vehicles = List.of();
     /** The same vehicles in a plain array, for the passes every car makes over the traffic each tick. */
     private Vehicle[] vehicleArray = new Vehicle[0];
     private AutonomousCar autonomousCar;
-    private final Telemetry telemetry = new SceneTelemetry(this);
+    private Telemetry telemetry = new SceneTelemetry(this);
 
     Scene(WorldMap map, SimState state) {
         this.map = map;

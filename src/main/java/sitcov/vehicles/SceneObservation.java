@@ -20,12 +20,12 @@ import sitcov.world.Target;
  * are worked out only when a controller first asks for them in a tick.
  */
 final class SceneObservation implements Observation, RightOfWay {
-    private final Scene scene;
-    private final AutonomousCar car;
-    private final List<Vehicle> traffic = new ArrayList<>();
-    private final List<Box> obstacles = new ArrayList<>();
-    private final List<Vehicle> trafficView = new ReadOnlyView<>(traffic);
-    private final List<Box> obstaclesView = new ReadOnlyView<>(obstacles);
+    private Scene scene;
+    private AutonomousCar car;
+    private List<Vehicle> traffic = new ArrayList<>();
+    private List<Box> obstacles = new ArrayList<>();
+    private List<Vehicle> trafficView = new ReadOnlyView<>(traffic);
+    private List<Box> obstaclesView = new ReadOnlyView<>(obstacles);
     private MarkingCamera camera;
     private Lidar lidar;
     private long cameraTick = -1;

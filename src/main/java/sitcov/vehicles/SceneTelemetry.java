@@ -10,7 +10,7 @@ import sitcov.world.WorldMap;
 
 /** The world's telemetry of one run: read-only answers from the scene as it stands after the tick. */
 final class SceneTelemetry implements Telemetry {
-    private final Scene scene;
+    private Scene scene;
 
     SceneTelemetry(Scene scene) {
         this.scene = scene;

@@ -21,7 +21,7 @@ final class SqueezeIn {
     /** How deep, from its side to the kerb, the row is taken to be. */
     static final double ROW_DEPTH = 3;
 
-    private final BuiltinCar car;
+    private BuiltinCar car;
     private Compass lane;
     /** Where the row ends, as a coordinate along the road, so it stays put while the car moves; NaN when not squeezing in. */
     private double rowEndAlong = Double.NaN;

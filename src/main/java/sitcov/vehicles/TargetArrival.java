@@ -11,7 +11,7 @@ import sitcov.world.Target;
 public final class TargetArrival {
     public static final double CAPTURE_DISTANCE = 1.5;
 
-    private final Target target;
+    private Target target;
 
     TargetArrival(Target target) {
         this.target = target;

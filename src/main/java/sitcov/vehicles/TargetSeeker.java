@@ -20,8 +20,8 @@ final class TargetSeeker {
     /** A Target further than this to the side of the car cannot be reached without changing lane. */
     static final double REACHABLE_ASIDE = 1.4;
 
-    private final BuiltinCar car;
-    private final FaultSwitchboard faults;
+    private BuiltinCar car;
+    private FaultSwitchboard faults;
 
     TargetSeeker(BuiltinCar car, FaultSwitchboard faults) {
         this.car = car;

@@ -15,8 +15,8 @@ final class Waypoints {
     private static final Fault[] DISPLACEMENTS = {Fault.WAYPOINTS_NORTH_WEST, Fault.WAYPOINTS_NORTH_EAST,
         Fault.WAYPOINTS_SOUTH_WEST, Fault.WAYPOINTS_SOUTH_EAST};
 
-    private final FaultSwitchboard faults;
-    private final List<Waypoint> registered = new ArrayList<>();
+    private FaultSwitchboard faults;
+    private List<Waypoint> registered = new ArrayList<>();
     private Waypoint lastReached;
     private int nextId = 1;
     private int lastId;

@@ -5,6 +5,7 @@
  * the junction locks, the {@link sitcov.vehicles.Scene} they share and the run's
  * {@link sitcov.vehicles.Telemetry}, all that watchers of a run receive. The builtin controller:
  * {@link sitcov.vehicles.BuiltinCar} with its sensors (camera, LIDAR, radar processing) and named
- * behaviours, which sees only what its observation carries.
+ * behaviours, which sees only what its observation carries. What a run holds keeps no final instance
+ * fields: a checkpoint copies it field by field ({@link sitcov.engine.ModelCopy}).
  */
 package sitcov.vehicles;

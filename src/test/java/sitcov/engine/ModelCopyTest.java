@@ -9,17 +9,18 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.Set;
 import java.util.function.LongSupplier;
 import org.junit.jupiter.api.Test;
 
 class ModelCopyTest {
-    private static final ModelCopy.Sharing NOTHING_MORE = new ModelCopy.Sharing(type -> false);
+    private static final ModelCopy.Sharing NOTHING_MORE = new ModelCopy.Sharing(Set.of());
 
-    /** A mutable model object: a counter, a buffer, friends (one of them possibly itself). */
+    /** A mutable model object: a counter, a buffer, friends (one of them possibly itself). Not final: a copy writes them. */
     static final class Node {
-        private final String name;
-        private final double[] buffer = new double[3];
-        private final List<Node> friends = new ArrayList<>();
+        private String name;
+        private double[] buffer = new double[3];
+        private List<Node> friends = new ArrayList<>();
         private int count;
         private Node self;
 
@@ -30,7 +31,7 @@ class ModelCopyTest {
     }
 
     static final class Holder {
-        private final Object held;
+        private Object held;
 
         Holder(Object held) {
             this.held = held;
@@ -68,9 +69,36 @@ class ModelCopyTest {
     void whatTheCallerNamesImmutableIsShared() {
         Node shared = new Node("map");
         Holder h = new Holder(shared);
-        Holder copy = ModelCopy.of(h, new ModelCopy.Sharing(type -> type == Node.class));
+        Holder copy = ModelCopy.of(h, new ModelCopy.Sharing(Set.of(Node.class)));
         assertNotSame(h, copy);
         assertSame(shared, copy.held);
+    }
+
+    /** Holds its count in a final field, which a copy would have to write by deep reflection. */
+    static final class Counter {
+        private final int count;
+
+        Counter(int count) {
+            this.count = count;
+        }
+    }
+
+    @Test
+    void aFinalFieldIsRefusedNamingItAndTheFieldThatLedToIt() {
+        IllegalStateException e = assertThrows(IllegalStateException.class,
+                () -> ModelCopy.of(new Holder(new Counter(3)), NOTHING_MORE));
+        assertTrue(e.getMessage().contains("Counter.count is final") && e.getMessage().contains("in Holder.held"),
+                e.getMessage());
+        Counter shared = new Counter(3);
+        assertSame(shared, ModelCopy.of(new Holder(shared), new ModelCopy.Sharing(Set.of(Counter.class))).held,
+                "a class named immutable may keep its fields final: it is shared, never written");
+    }
+
+    @Test
+    void onlyTheClassesNamedAreSharedNotTheirNeighbours() {
+        Node n = new Node("n");
+        Holder copy = ModelCopy.of(new Holder(n), new ModelCopy.Sharing(Set.of(Counter.class)));
+        assertNotSame(n, copy.held, "a class of the same package as one named is copied");
     }
 
     @Test

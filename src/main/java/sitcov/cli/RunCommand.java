@@ -39,6 +39,12 @@ final class RunCommand implements Command {
         this.drivers = drivers;
     }
 
+    /** This command with checkpoints on or off ({@code --fork}), for a command that runs through {@link #start}. */
+    RunCommand forking(boolean on) {
+        fork = on;
+        return this;
+    }
+
     @Override
     public String name() {
         return "run";
@@ -80,7 +86,16 @@ final class RunCommand implements Command {
         if (preset.campaign() != null) {
             return campaign(preset.campaign(), options, threads, out, err);
         }
-        ExperimentConfig config = preset.config();
+        return start(preset.config(), options, preset.file().toString(), threads, out, err);
+    }
+
+    /**
+     * Runs {@code config} into the folder {@code options} name (--out, --shard, --dry-run): a preset's
+     * experiment, or one another command built ({@code versions}); {@code source} is kept in the
+     * folder's execution record.
+     */
+    int start(ExperimentConfig config, Options options, String source, int threads, PrintStream out, PrintStream err)
+            throws UsageException {
         Shard shard = shard(options, config);
         if (options.has("--dry-run")) {
             if (options.has("--out")) {
@@ -96,7 +111,7 @@ final class RunCommand implements Command {
         // a controller program that cannot start is refused before a results folder is made for it
         Controllers.Opened controllers = Controllers.open(config, folder);
         Map<String, String> execution = execution(threads);
-        execution.put("preset_file", preset.file().toString());
+        execution.put("preset_file", source);
         ResultsRecorder recorder;
         try {
             recorder = create(folder, manifest, execution);

@@ -5,30 +5,29 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Properties;
 import java.util.Set;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import sitcov.control.ControllerFactory;
-import sitcov.control.ControllerSource;
-import sitcov.judge.VersionJudge;
-import sitcov.judge.VersionVerdict;
-import sitcov.results.IoReason;
-import sitcov.results.OutputFile;
-import sitcov.world.MapGenerator;
+import sitcov.coverage.GridDefinition;
+import sitcov.drivers.Drivers;
+import sitcov.experiment.AnalysisPlan;
+import sitcov.experiment.BudgetKind;
+import sitcov.experiment.ExperimentConfig;
+import sitcov.judge.FaultyRuns;
+import sitcov.judge.Variant;
+import sitcov.judge.VariantList;
 
 /**
  * {@code versions}: a controller's variants (its next version, a build with a planted bug) against
- * the reference controller, map by map, by the differential oracle (README, "Test your own
- * controller"). Writes versions.csv and verdict.txt into a results folder.
+ * the reference controller on N maps, by the differential oracle (README, "Versions compared"). A
+ * thin command over an ordinary experiment: one driver ({@code random}: every map drawn is run),
+ * one replication, the reference and its variants; it writes an ordinary results folder, whose
+ * verdict gives each variant against the reference.
  */
 final class VersionsCommand implements Command {
     static final int MAX_MAPS = 1_000_000;
+    private static final String DRIVER = "random";
+    private static final Set<String> KEYS = Set.of("name", "description", "reference", "variants", "maps", "master_seed");
 
     @Override
     public String name() {
@@ -37,7 +36,7 @@ final class VersionsCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "PRESET | --reference CONTROLLER --variants CONTROLLER[;CONTROLLER…]  [--maps N] [--seed S0] [--threads T] [--fork on|off] [--out DIR]";
+        return "PRESET | --reference CONTROLLER --variants VARIANT[;VARIANT…]  [--maps N] [--seed S] [--threads T] [--fork on|off] [--out DIR]";
     }
 
     @Override
@@ -49,95 +48,27 @@ final class VersionsCommand implements Command {
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--reference", "--variants", "--maps", "--seed", "--threads",
                 "--fork", "--out"), Set.of());
-        VersionsPlan plan = plan(options);
         int threads = options.threads(err);
-        boolean fork = options.forks();
-        Path folder = options.value("--out").map(Path::of)
-                .orElse(Path.of("target", "results", plan.name() + "-seed" + plan.firstSeed()));
-        if (Files.exists(folder) && !isEmptyFolder(folder)) {
-            throw new UsageException("versions: --out " + Options.shown(folder) + " exists and is not an empty folder;"
-                    + " results never overwrite others: name a new folder.");
-        }
-        List<ControllerSource> sources = new ArrayList<>();
-        try {
-            // every controller is started and handshaken before the folder is made: one that cannot leaves nothing
-            sources.add(Controllers.open(plan.reference(), folder, "controller-reference"));
-            for (int v = 0; v < plan.variants().size(); v++) {
-                sources.add(Controllers.open(plan.variants().get(v), folder, "controller-variant-" + (v + 1)));
-            }
-            try {
-                Files.createDirectories(folder);
-            } catch (IOException e) {
-                throw new UsageException("versions: cannot create " + folder + ": " + IoReason.of(e, folder) + ".");
-            }
-            List<List<VersionVerdict>> judged = judge(plan, sources, threads, fork);
-            String csv = VersionsReport.csv(plan, judged);
-            String verdict = VersionsReport.verdict(plan, judged);
-            OutputFile.writeString(folder.resolve("versions.csv"), csv);
-            OutputFile.writeString(folder.resolve("verdict.txt"), verdict);
-            out.print(verdict);
-            out.println("Results in " + folder);
-            return ExitCode.OK;
-        } catch (IOException e) {
-            err.println("sitcov: versions: cannot write into " + folder + ": " + IoReason.of(e, folder) + ".");
-            return ExitCode.FAILURE;
-        } finally {
-            sources.forEach(ControllerSource::close);
-        }
+        ExperimentConfig config = config(options);
+        return new RunCommand(Drivers.standard()).forking(options.forks()).start(config, options, "versions " + config.name(),
+                threads, out, err);
     }
 
-    private static List<List<VersionVerdict>> judge(VersionsPlan plan, List<ControllerSource> sources, int threads,
-                                                    boolean fork) {
-        ExecutorService pool = Executors.newFixedThreadPool(threads);
-        try {
-            List<Future<List<VersionVerdict>>> futures = new ArrayList<>();
-            for (int i = 0; i < plan.maps(); i++) {
-                long seed = plan.firstSeed() + i;
-                futures.add(pool.submit(() -> {
-                    List<ControllerFactory> variants = new ArrayList<>();
-                    for (ControllerSource s : sources.subList(1, sources.size())) {
-                        variants.add(s.forThisThread());
-                    }
-                    ControllerFactory reference = sources.get(0).forThisThread();
-                    return VersionJudge.judge(MapGenerator.generate(seed), seed, fork ? reference : reference.unforked(),
-                            variants);
-                }));
-            }
-            List<List<VersionVerdict>> all = new ArrayList<>();
-            for (Future<List<VersionVerdict>> f : futures) {
-                all.add(f.get());
-            }
-            return all;
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted", e);
-        } catch (ExecutionException e) {
-            throw new IllegalStateException(e.getCause().getMessage(), e.getCause());
-        } finally {
-            pool.shutdownNow();
-        }
-    }
-
-    private static VersionsPlan plan(Options options) throws UsageException {
+    /** The experiment the options name: N maps drawn from the seed's stream, every one run, the reference and its variants. */
+    private static ExperimentConfig config(Options options) throws UsageException {
         Properties p = new Properties();
         String name = "versions";
         if (options.positional().size() == 1) {
-            String named = options.positional().get(0);
-            Path shipped = Path.of("experiments", "controllers", named + ".properties");
-            Path file = Files.isRegularFile(shipped) ? shipped : Path.of(named);
-            if (!Files.isRegularFile(file)) {
-                throw new UsageException("versions: no preset '" + named + "': neither a file nor " + shipped
-                        + "; the shipped one is byo-controller, or give --reference and --variants.");
-            }
+            Path file = presetFile(options.positional().get(0));
             try {
                 p.load(new java.io.StringReader(Files.readString(file, StandardCharsets.UTF_8)));
             } catch (IOException | IllegalArgumentException e) {
                 throw new UsageException("versions: cannot read the preset " + file + ": " + e.getMessage() + ".");
             }
             for (String key : p.stringPropertyNames()) {
-                if (!Set.of("name", "description", "reference", "variants", "maps", "master_seed").contains(key)) {
-                    throw new UsageException("versions: " + file + ": unknown key '" + key + "'; the keys are [description,"
-                            + " maps, master_seed, name, reference, variants].");
+                if (!KEYS.contains(key)) {
+                    throw new UsageException("versions: " + file + ": unknown key '" + key + "'; the keys are "
+                            + KEYS.stream().sorted().toList() + ".");
                 }
             }
             name = p.getProperty("name", file.getFileName().toString().replaceFirst("\\.properties$", "")).strip();
@@ -152,14 +83,37 @@ final class VersionsCommand implements Command {
             throw new UsageException("versions: name the reference controller and its variants, e.g. --reference builtin"
                     + " --variants 'builtin:16;builtin:17', or a preset with reference= and variants=.");
         }
-        List<String> variantList = new ArrayList<>();
-        for (String v : Arrays.stream(variants.split(";")).map(String::strip).toList()) {
-            variantList.add(Controllers.check(v));
+        List<Variant> list;
+        try {
+            list = VariantList.parse(variants);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("versions: variants: " + e.getMessage() + ".");
+        }
+        for (Variant v : list) {
+            if (v instanceof Variant.Controller c) {
+                Controllers.check(c.spec());
+            }
         }
         Controllers.check(reference);
         int maps = options.count("--maps", 1, MAX_MAPS).orElse(countOf(p.getProperty("maps", "100")));
-        long seed = options.seed("--seed").orElse(Long.parseLong(p.getProperty("master_seed", "1").strip()));
-        return new VersionsPlan(name, reference, variantList, maps, seed);
+        long seed = options.seed("--seed").orElse(seedOf(p.getProperty("master_seed", "1")));
+        List<String> drivers = List.of(DRIVER);
+        try {
+            return new ExperimentConfig(name, seed, maps, 1, list, BudgetKind.TICKS, GridDefinition.paper(), drivers,
+                    List.of(), maps, FaultyRuns.UNTIL_VERDICT, AnalysisPlan.defaults(drivers), reference);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("versions: " + e.getMessage() + ".");
+        }
+    }
+
+    private static Path presetFile(String named) throws UsageException {
+        Path shipped = Path.of("experiments", "controllers", named + ".properties");
+        Path file = Files.isRegularFile(shipped) ? shipped : Path.of(named);
+        if (!Files.isRegularFile(file)) {
+            throw new UsageException("versions: no preset '" + named + "': neither a file nor " + shipped
+                    + "; the shipped one is byo-controller, or give --reference and --variants.");
+        }
+        return file;
     }
 
     private static int countOf(String text) throws UsageException {
@@ -174,11 +128,11 @@ final class VersionsCommand implements Command {
         throw new UsageException("versions: maps= needs a whole number from 1 to " + MAX_MAPS + ", not '" + text.strip() + "'.");
     }
 
-    private static boolean isEmptyFolder(Path folder) {
-        try (var list = Files.list(folder)) {
-            return list.findAny().isEmpty();
-        } catch (IOException e) {
-            return false;
+    private static long seedOf(String text) throws UsageException {
+        try {
+            return Long.parseLong(text.strip());
+        } catch (NumberFormatException e) {
+            throw new UsageException("versions: master_seed= needs a whole number, not '" + text.strip() + "'.");
         }
     }
 }

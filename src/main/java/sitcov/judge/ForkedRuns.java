@@ -58,45 +58,6 @@ final class ForkedRuns {
         return new Judging(new JudgedMap(faultFree, List.of(verdicts)), stepped);
     }
 
-    /**
-     * The reference run of the builtin car on {@code map} and, for each set of {@code planted}, the
-     * run of the builtin car with that set planted, driven to its end: a version departs where the
-     * first of its faults does, and one that never departs runs as the reference does.
-     */
-    static List<RunResult> versions(WorldMap map, long internalSeed, List<Set<Fault>> planted,
-                                    ControllerFactory reference) {
-        EnumSet<Fault> union = EnumSet.noneOf(Fault.class);
-        planted.forEach(union::addAll);
-        if (union.isEmpty()) {
-            RunResult only = Simulator.run(map, internalSeed, Set.of(), RunObserver.NONE, reference).result();
-            return java.util.Collections.nCopies(planted.size() + 1, only);
-        }
-        LiveRun watching = LiveRun.watching(map, internalSeed, union, reference);
-        RunResult base = Simulator.drive(watching, RunObserver.NONE, null).result();
-        RunResult[] runs = new RunResult[planted.size()];
-        long[] departs = new long[planted.size()];
-        List<Integer> departing = new ArrayList<>();
-        for (int v = 0; v < planted.size(); v++) {
-            departs[v] = planted.get(v).stream().map(watching::shadow).filter(Shadow::departs)
-                    .mapToLong(Shadow::departureTick).min().orElse(-1);
-            if (departs[v] < 0) {
-                runs[v] = base;
-            } else {
-                departing.add(v);
-            }
-        }
-        departing.sort(Comparator.comparingLong(v -> departs[v]));
-        Feeder feeder = new Feeder(map, internalSeed, reference);
-        for (int v : departing) {
-            List<Shadow> shadows = planted.get(v).stream().sorted().map(watching::shadow).toList();
-            runs[v] = Simulator.drive(feeder.at(departs[v]).forkWith(shadows), RunObserver.NONE, null).result();
-        }
-        List<RunResult> all = new ArrayList<>(runs.length + 1);
-        all.add(base);
-        all.addAll(List.of(runs));
-        return all;
-    }
-
     /** The record of a faulty run that never departed from the fault-free run: that run, and what the fault did in it. */
     private static RunRecord unchanged(RunResult faultFree, Shadow shadow) {
         List<Activation> activations = new ArrayList<>(Fault.values().length);

@@ -8,10 +8,10 @@ import sitcov.faults.FaultSet;
 
 /**
  * Variants as a preset's {@code variants=} key writes them: specs separated by {@code ;} (outside
- * quotes), each
- * {@code builtin:F} (one seeded fault of the builtin reference; with several faults, the builtin car
- * with all of them planted, as another controller), {@code exec:COMMAND ARGS…}, {@code java:NAME}, or
- * the whole list {@code none} (no variants: the experiment seeks the reference's own failures).
+ * quotes), each {@code builtin:F} (one seeded fault of the builtin reference; with several faults, the
+ * builtin car with all of them planted, as another controller), {@code builtin} (the builtin car, as
+ * another controller), {@code exec:COMMAND ARGS…} or {@code java:NAME}; or the whole list {@code none}
+ * (no variants: the experiment seeks the reference's own failures).
  */
 public final class VariantList {
     /** The list of no variants. */
@@ -41,9 +41,9 @@ public final class VariantList {
             if (spec.equals(NONE)) {
                 throw new IllegalArgumentException("variants=none stands alone: it means no variants");
             }
-            if (SOURCES.stream().noneMatch(spec::startsWith)) {
-                throw new IllegalArgumentException("a variant is builtin:FAULTS, exec:COMMAND ARGS or java:NAME (or the"
-                        + " whole list is none), not '" + spec + "'");
+            if (!spec.equals("builtin") && SOURCES.stream().noneMatch(spec::startsWith)) {
+                throw new IllegalArgumentException("a variant is builtin:FAULTS, builtin, exec:COMMAND ARGS or java:NAME"
+                        + " (or the whole list is none), not '" + spec + "'");
             }
             if (spec.startsWith("seam:")) {
                 throw new IllegalArgumentException("seam:NAME names a sensor or actuator fault at the seam, which this"

@@ -5,8 +5,8 @@
  * from the differential oracle ({@link sitcov.judge.DifferentialOracle}, settled as it happens by
  * {@link sitcov.judge.VerdictWatch}) or the paper's notion: {@link sitcov.judge.FaultVerdict}, kept by
  * an experiment as {@link sitcov.judge.FaultOutcome} and {@link sitcov.judge.RunSummary}. Fault
- * calibration ({@link sitcov.judge.FaultCalibration}) judges many maps this way. Versions of a
- * controller are judged against a reference the same way ({@link sitcov.judge.VersionJudge}). A faulty
+ * calibration ({@link sitcov.judge.FaultCalibration}) judges many maps this way. A variant that is
+ * another controller ({@link sitcov.judge.Variant}) is judged against the reference the same way. A faulty
  * run of a controller that can be copied is forked from a checkpoint of the fault-free run where its
  * fault first departs, or judged from it if it never does ({@link sitcov.judge.ForkedRuns}); a run
  * stepped back uses the same checkpoints ({@link sitcov.judge.RunHistory}). A new way to run or

@@ -12,6 +12,7 @@ import sitcov.analysis.Discovery;
 import sitcov.analysis.OwnFailures;
 import sitcov.analysis.SituationFaults;
 import sitcov.analysis.Summary;
+import sitcov.analysis.VariantFindings;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ReplicationResult;
@@ -53,7 +54,7 @@ final class AnalysisFiles {
         OwnFailures own = OwnFailures.of(summary.results(), config.drivers(), reference);
         List<String> verdict = new ArrayList<>(ControllerFailuresText.lines(
                 ControllerFailures.of(summary.results(), config.variants())));
-        verdict.addAll(VariantsText.lines(config));
+        verdict.addAll(VariantsText.lines(config, VariantFindings.of(summary.results(), config.variants())));
         verdict.addAll(VerdictText.lines(comparison, uniformity, config.budget()));
         if (!summary.results().isEmpty()) {
             verdict.addAll(OwnFailuresText.lines(own, reference, summary.results().size(),

@@ -11,21 +11,28 @@ import org.junit.jupiter.api.io.TempDir;
 
 class VersionsCommandTest {
     @Test
-    void versionsWritesARowPerMapAndVariantAndAVerdictPerVariant(@TempDir Path dir) throws Exception {
+    void versionsWritesAnOrdinaryResultsFolderWhoseVerdictGivesEachVariantAgainstTheReference(@TempDir Path dir)
+            throws Exception {
         Path out = dir.resolve("v");
         CliRunner r = CliRunner.run("versions", "--reference", "builtin", "--variants", "builtin:4;builtin:16", "--maps", "3",
                 "--threads", "1", "--out", out.toString());
         assertEquals(ExitCode.OK, r.exitCode(), r.err());
-        List<String> rows = Files.readAllLines(out.resolve("versions.csv"));
-        assertEquals(1 + 3 * 2, rows.size(), "a header and one row per map and variant");
-        assertTrue(rows.get(1).startsWith("1,1,1,"), rows.get(1));
-        String verdict = Files.readString(out.resolve("verdict.txt"));
-        assertTrue(verdict.contains("variant 1: builtin:4") && verdict.contains("variant 2: builtin:16"), verdict);
-        // fault 4 (a steering fault) leaves the road on almost every map: it must regress somewhere in three
-        long regressedWith4 = rows.stream().skip(1).filter(l -> l.split(",", -1)[2].equals("1"))
-                .filter(l -> !l.split(",", -1)[9].isEmpty()).count();
+        List<String> rows = Files.readAllLines(out.resolve("runs.csv"));
+        List<String> header = List.of(rows.get(0).split(","));
+        int variant = header.indexOf("fault");
+        int detection = header.indexOf("detection");
+        long maps = rows.stream().skip(1).filter(l -> l.split(",", -1)[variant].equals("NONE")).count();
+        assertTrue(maps >= 1 && maps <= 3, "at most the 3 maps drawn are judged: " + maps);
+        assertEquals(1 + 3 * maps, rows.size(), "a header and, per map, the reference's row and one per variant");
+        // fault 4 (a steering fault) leaves the road on almost every map: it must regress somewhere
+        long regressedWith4 = rows.stream().skip(1).map(l -> l.split(",", -1))
+                .filter(c -> c[variant].equals("4") && c[detection].equals("FOUND")).count();
         assertTrue(regressedWith4 > 0, String.join("\n", rows));
-        assertTrue(verdict.contains("fails where the reference did not: " + regressedWith4 + " of 3 maps"), verdict);
+        String verdict = Files.readString(out.resolve("verdict.txt"));
+        assertTrue(verdict.contains("variant 4 (waypoints-south-east): fails where the reference did not on "
+                + regressedWith4 + " of " + maps + " maps"), verdict);
+        assertTrue(verdict.contains("variant 16 (second-pull-out)"), verdict);
+        assertTrue(Files.isRegularFile(out.resolve("report.html")), "the same report as run's");
     }
 
     @Test

@@ -123,13 +123,14 @@ public final class Comparison {
     private static void measures(PairedReplications pair, AnalysisPlan plan, RandomGenerator random,
             List<MeasureComparison> out) {
         List<double[][]> earlier = new ArrayList<>();
-        for (Measure m : Measure.values()) {
+        List<Measure> compared = plan.measures();
+        for (Measure m : compared) {
             double[] x = pair.measureA(m);
             double[] y = pair.measureB(m);
             boolean primary = plan.isPrimary(m, pair.a(), pair.b());
             Alternative alternative = primary ? plan.primaryDirection().alternative(plan.primaryDrivers().get(0)
                     .equals(pair.a())) : Alternative.TWO_SIDED;
-            String note = notTestable(x, y, earlier);
+            String note = notTestable(x, y, earlier, compared);
             earlier.add(new double[][] {x, y});
             PairedDifference paired = paired(x, y, alternative, random);
             double margin = plan.margin(m);
@@ -177,7 +178,7 @@ public final class Comparison {
      * Why a measure cannot be tested for this pair, or null: no replications (an empty shard), constant in
      * both, or the numbers of an earlier measure.
      */
-    private static String notTestable(double[] x, double[] y, List<double[][]> earlier) {
+    private static String notTestable(double[] x, double[] y, List<double[][]> earlier, List<Measure> compared) {
         if (x.length == 0) {
             return NO_REPLICATIONS;
         }
@@ -190,7 +191,7 @@ public final class Comparison {
         }
         for (int e = 0; e < earlier.size(); e++) {
             if (Arrays.equals(earlier.get(e)[0], x) && Arrays.equals(earlier.get(e)[1], y)) {
-                return "the same numbers as " + Measure.values()[e].words() + " for this pair";
+                return "the same numbers as " + compared.get(e).words() + " for this pair";
             }
         }
         return null;

@@ -41,6 +41,8 @@ public record Metrics(int maps, int cells, double methodPropFault, double propMa
             case AVG_MAP_FAULT -> avgMapFault;
             case PROP_MAP_ALL_FAULT -> propMapAllFault;
             case DISCOVERY_AREA -> area;
+            case OWN_FAILURES, DISTINCT_OWN_FAILURES -> throw new IllegalArgumentException(measure.key()
+                    + " counts the reference's own failures: see OwnFailures");
         };
     }
 

@@ -87,7 +87,23 @@ public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
     }
 
     private static long count(DriverRun run) {
-        return run.maps().stream().filter(m -> !types(m).isEmpty()).count();
+        return count(run.maps());
+    }
+
+    /** Maps of {@code maps} whose reference run failed. */
+    static long count(List<MapRun> maps) {
+        return maps.stream().filter(m -> !types(m).isEmpty()).count();
+    }
+
+    /** The distinct own failures of {@code maps}: each cell × failure type once. */
+    static Set<Long> distinct(List<MapRun> maps) {
+        Set<Long> keys = new HashSet<>();
+        for (MapRun m : maps) {
+            for (sitcov.oracle.Failure t : types(m)) {
+                keys.add((long) m.cell() * sitcov.oracle.Failure.values().length + t.ordinal());
+            }
+        }
+        return keys;
     }
 
     private static double rate(long failures, long ticks) {

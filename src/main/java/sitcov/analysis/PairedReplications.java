@@ -58,7 +58,11 @@ final class PairedReplications {
         Metrics m = Metrics.of(compared, faults, Notion.DIFFERENTIAL);
         double area = Discovery.of(run, faults).area(horizon);
         for (Measure measure : Measure.values()) {
-            measures[measure.ordinal()][r] = m.value(measure, area);
+            measures[measure.ordinal()][r] = switch (measure) {
+                case OWN_FAILURES -> OwnFailures.count(compared);
+                case DISTINCT_OWN_FAILURES -> OwnFailures.distinct(compared).size();
+                default -> m.value(measure, area);
+            };
         }
         maps[r] = compared.size();
         for (MapRun map : compared) {

@@ -196,6 +196,10 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
             GridDefinition grid = gridFile == null ? GridDefinition.paper() : GridDefinition.read(Path.of(gridFile.strip()));
             field = "analysis";
             AnalysisPlan analysis = AnalysisPlan.read(p::getProperty, drivers);
+            if (variants.isEmpty() && !p.containsKey(AnalysisPlan.PRIMARY_MEASURE)) {
+                // with no variant to find, the question is the reference's own failures
+                analysis = analysis.withPrimary(sitcov.experiment.Measure.DISTINCT_OWN_FAILURES);
+            }
             return new ExperimentConfig(name, seed, candidates, replications, variants, budget, grid, drivers, sweep,
                     candidateLimit, faultyRuns, analysis, controller);
         } catch (IOException e) {

@@ -97,6 +97,25 @@ public record AnalysisPlan(Measure primaryMeasure, List<String> primaryDrivers, 
         return keys;
     }
 
+    /**
+     * The measures compared, in order: the paper's, and the reference's own failures too when the primary
+     * question is about them (a preset with no variants asks it by default).
+     */
+    public List<Measure> measures() {
+        if (!primaryMeasure.ofOwnFailures()) {
+            return Measure.PAPER;
+        }
+        List<Measure> all = new java.util.ArrayList<>(Measure.PAPER);
+        all.add(Measure.OWN_FAILURES);
+        all.add(Measure.DISTINCT_OWN_FAILURES);
+        return List.copyOf(all);
+    }
+
+    /** The same plan with {@code measure} as the primary question's. */
+    public AnalysisPlan withPrimary(Measure measure) {
+        return new AnalysisPlan(measure, primaryDrivers, primaryDirection, margins);
+    }
+
     /** The plan as key=value pairs, as a manifest records it. */
     public Map<String, String> properties() {
         Map<String, String> p = new LinkedHashMap<>();
@@ -105,7 +124,12 @@ public record AnalysisPlan(Measure primaryMeasure, List<String> primaryDrivers, 
             p.put(PRIMARY_DRIVERS, String.join(",", primaryDrivers));
         }
         p.put(PRIMARY_DIRECTION, primaryDirection.key());
-        margins.forEach((m, v) -> p.put(MARGIN + m.key(), format(v)));
+        List<Measure> compared = measures();
+        margins.forEach((m, v) -> {
+            if (compared.contains(m)) {
+                p.put(MARGIN + m.key(), format(v));
+            }
+        });
         return p;
     }
 

@@ -13,7 +13,21 @@ public enum Measure {
     AVG_MAP_FAULT("avg_map_fault", "faults found per map (avg-map-fault)", "faults found per map", "faults a map", 0.1),
     PROP_MAP_ALL_FAULT("prop_map_all_fault", "share of maps finding every fault (prop-map-all-fault)",
             "share of maps finding every fault", "", 0.01),
-    DISCOVERY_AREA("discovery_area", "area under faults found against ticks", "area under faults-vs-ticks", "", 0.02);
+    DISCOVERY_AREA("discovery_area", "area under faults found against ticks", "area under faults-vs-ticks", "", 0.02),
+    /** Maps whose reference run failed (an accident or the controller's failure): the reference's own failures. */
+    OWN_FAILURES("own_failures", "own failures of the reference (maps)", "own failures", "maps", 1),
+    /** The reference's own failures counted once per cell × failure type. */
+    DISTINCT_OWN_FAILURES("distinct_own_failures", "distinct own failures of the reference (cell × failure type)",
+            "distinct own failures", "failures", 1);
+
+    /** The paper's measures, compared in every experiment; the own-failure ones join them when a preset asks. */
+    public static final java.util.List<Measure> PAPER = java.util.List.of(CELLS_COVERED, MAPS_RUN, FAULTS_FOUND,
+            AVG_MAP_FAULT, PROP_MAP_ALL_FAULT, DISCOVERY_AREA);
+
+    /** Whether the measure counts the reference's own failures rather than its variants'. */
+    public boolean ofOwnFailures() {
+        return this == OWN_FAILURES || this == DISTINCT_OWN_FAILURES;
+    }
 
     private final String key;
     private final String words;

@@ -74,6 +74,59 @@ public final class Bootstrap {
         return percentile(Descriptive.mean(d), replicates, confidence);
     }
 
+    /**
+     * The ratio of two rates over paired units (replications): (Σ eventsA / Σ exposureA) over
+     * (Σ eventsB / Σ exposureB), with a 95 % interval from 2000 resamples of whole units, so events
+     * that cluster in a few units widen it as they should. A resample whose ratio is undefined (no
+     * events on either side, or no exposure) is left out; with no units, or an undefined ratio, {@link #NOTHING}.
+     */
+    public static ConfidenceInterval pairedRateRatio(double[] eventsA, double[] exposureA, double[] eventsB,
+                                                     double[] exposureB, RandomGenerator random) {
+        int n = eventsA.length;
+        if (exposureA.length != n || eventsB.length != n || exposureB.length != n) {
+            throw new IllegalArgumentException("paired rates need as many units on each side");
+        }
+        double estimate = rateRatio(eventsA, exposureA, eventsB, exposureB, null);
+        if (n == 0 || Double.isNaN(estimate)) {
+            return NOTHING;
+        }
+        double[] replicates = new double[DEFAULT_RESAMPLES];
+        int kept = 0;
+        int[] units = new int[n];
+        for (int b = 0; b < DEFAULT_RESAMPLES; b++) {
+            for (int i = 0; i < n; i++) {
+                units[i] = random.nextInt(n);
+            }
+            double r = rateRatio(eventsA, exposureA, eventsB, exposureB, units);
+            if (!Double.isNaN(r)) {
+                replicates[kept++] = r;
+            }
+        }
+        return kept == 0 ? new ConfidenceInterval(estimate, Double.NaN, Double.NaN)
+                : percentile(estimate, Arrays.copyOf(replicates, kept), 0.95);
+    }
+
+    /** The rate ratio over {@code units} (all of them when null): NaN when undefined, +∞ when only B has none. */
+    private static double rateRatio(double[] eventsA, double[] exposureA, double[] eventsB, double[] exposureB,
+                                    int[] units) {
+        double ea = 0;
+        double xa = 0;
+        double eb = 0;
+        double xb = 0;
+        int n = units == null ? eventsA.length : units.length;
+        for (int k = 0; k < n; k++) {
+            int i = units == null ? k : units[k];
+            ea += eventsA[i];
+            xa += exposureA[i];
+            eb += eventsB[i];
+            xb += exposureB[i];
+        }
+        if (xa <= 0 || xb <= 0 || ea == 0 && eb == 0) {
+            return Double.NaN;
+        }
+        return (ea / xa) / (eb / xb);
+    }
+
     private static double resampledMean(double[] values, RandomGenerator random) {
         double sum = 0;
         for (int i = 0; i < values.length; i++) {

@@ -41,11 +41,14 @@ public final class VerdictText {
             out.add("Primary question (declared in the preset): " + question(comparison.plan(), budget));
             out.add("Answer: " + PrimaryAnswer.of(primary.get(), comparison.plan()));
         }
-        fewReplications(comparison.replications()).ifPresent(out::add);
-        unreachable(comparison).ifPresent(out::add);
-        out.add(howToRead(comparison, budget));
         List<MeasureComparison> all = comparison.measures();
-        int perPair = sitcov.experiment.Measure.values().length;
+        if (!all.isEmpty()) {
+            // with one driver there is no pair to compare, and nothing for these paragraphs to explain
+            fewReplications(comparison.replications()).ifPresent(out::add);
+            unreachable(comparison).ifPresent(out::add);
+            out.add(howToRead(comparison, budget));
+        }
+        int perPair = comparison.plan().measures().size();
         for (int i = 0; i < all.size(); i += perPair) {
             List<MeasureComparison> pair = all.subList(i, i + perPair);
             String a = pair.get(0).driverA();

@@ -118,16 +118,70 @@ class RunWithAJavaControllerTest {
     }
 
     @Test
-    void withoutVariantsTheExperimentSeeksTheReferencesOwnFailures(@TempDir Path dir) throws IOException {
+    void withoutVariantsTheExperimentAsksWhichDriverFindsMoreOfTheReferencesOwnFailures(@TempDir Path dir)
+            throws IOException {
         Path out = dir.resolve("out");
         CliRunner r = CliRunner.run("run", preset(dir, "").toString(), "--out", out.toString(), "--threads", "1");
-        assertEquals(ExitCode.OK, r.exitCode(), r.err() + r.out());
-        assertTrue(Files.readString(out.resolve("manifest.properties")).contains("variants=none\n"));
-        assertTrue(rows(out).stream().skip(1).allMatch(l -> l.split(",")[11].equals("NONE")),
+        assertEquals(ExitCode.OK, r.exitCode(), r.err());
+        String manifest = Files.readString(out.resolve("manifest.properties"));
+        assertTrue(manifest.contains("variants=none\n") && manifest.contains("primary_measure=distinct_own_failures\n"),
+                manifest);
+        List<String> rows = rows(out);
+        List<String> header = List.of(rows.get(0).split(","));
+        assertTrue(rows.stream().skip(1).allMatch(l -> l.split(",")[header.indexOf("fault")].equals("NONE")),
                 "only reference rows: there is no variant");
         // the lane keeper brakes for nothing and knows no junction: it fails on its own, and each is listed
-        List<String> own = Files.readAllLines(out.resolve("own-failures.csv"));
-        assertTrue(own.size() > 1, "its own failures are listed: " + own);
+        assertTrue(Files.readAllLines(out.resolve("own-failures.csv")).size() > 1);
+        // own failures per replication and driver, recounted from runs.csv over the maps both drivers of a
+        // replication judged within the ticks both spent (the pair's horizon)
+        String stats = Files.readString(out.resolve("stats.csv"));
+        for (int rep = 0; rep < 2; rep++) {
+            long horizon = Math.min(ticks(rows, header, rep, "coverage-filter", Long.MAX_VALUE)[0],
+                    ticks(rows, header, rep, "random", Long.MAX_VALUE)[0]);
+            long[] filter = ticks(rows, header, rep, "coverage-filter", horizon);
+            long[] random = ticks(rows, header, rep, "random", horizon);
+            assertTrue(filter[1] + random[1] > 0, "a test of own failures needs some: replication " + rep);
+        }
+        double[] means = new double[2];
+        for (int rep = 0; rep < 2; rep++) {
+            long horizon = Math.min(ticks(rows, header, rep, "coverage-filter", Long.MAX_VALUE)[0],
+                    ticks(rows, header, rep, "random", Long.MAX_VALUE)[0]);
+            means[0] += ticks(rows, header, rep, "coverage-filter", horizon)[1] / 2.0;
+            means[1] += ticks(rows, header, rep, "random", horizon)[1] / 2.0;
+        }
+        String line = stats.lines().filter(l -> l.startsWith("measure,own_failures,coverage-filter,random,"))
+                .findFirst().orElseThrow(() -> new AssertionError(stats));
+        String[] cells = line.split(",", -1);
+        List<String> columns = List.of(stats.lines().findFirst().orElseThrow().split(","));
+        assertEquals(means[0], Double.parseDouble(cells[columns.indexOf("mean_a")]), 1e-3, line);
+        assertEquals(means[1], Double.parseDouble(cells[columns.indexOf("mean_b")]), 1e-3, line);
+        assertTrue(Files.readString(out.resolve("verdict.txt")).contains("distinct own failures"));
+    }
+
+    /**
+     * A driver's ticks in a replication ({@code [0]}, all its maps) and how many of its maps judged whole within
+     * {@code horizon} ticks had a reference run that failed ({@code [1]}).
+     */
+    private static long[] ticks(List<String> rows, List<String> header, int replication, String driver, long horizon) {
+        long spent = 0;
+        long failed = 0;
+        for (String line : rows.subList(1, rows.size())) {
+            String[] c = line.split(",", -1);
+            if (Integer.parseInt(c[header.indexOf("replication")]) != replication
+                    || !c[header.indexOf("driver")].equals(driver) || !c[header.indexOf("fault")].equals("NONE")) {
+                continue;
+            }
+            spent += Long.parseLong(c[header.indexOf("ticks")]);
+            if (spent > horizon) {
+                break;
+            }
+            boolean accident = false;
+            for (String type : List.of("clashwithobstacle", "clashwithothercar", "leaveroad", "crosscentreline", "timeout")) {
+                accident |= Long.parseLong(c[header.indexOf(type)]) > 0;
+            }
+            failed += accident || c[header.indexOf("outcome")].startsWith("CONTROLLER") ? 1 : 0;
+        }
+        return new long[] {spent, failed};
     }
 
     @Test

@@ -85,4 +85,27 @@ class BootstrapTest {
                 && Double.isNaN(Bootstrap.NOTHING.high()));
         assertEquals(new SplittableRandom(9).nextLong(), used.nextLong(), "the stream is where it was");
     }
+
+    @Test
+    void aRateRatioOverTwoReplicationsRunsFromTheLeastToTheMostOfItsThreeResampledValues() {
+        // replication 0: A 2 events in 100 ticks, B 1 in 100; replication 1: A 0 in 100, B 3 in 100.
+        // A resample is {0,0}, {1,1} (each with probability 1/4) or one of each (1/2), with ratios
+        // (4/200)/(2/200) = 2, (0/200)/(6/200) = 0 and (2/200)/(4/200) = 0.5: each far more likely than
+        // 2.5 %, so in 2000 resamples the 95 % interval is all of [0, 2]; the estimate is 0.5.
+        double[] ea = {2, 0};
+        double[] xa = {100, 100};
+        double[] eb = {1, 3};
+        double[] xb = {100, 100};
+        ConfidenceInterval ci = Bootstrap.pairedRateRatio(ea, xa, eb, xb, new SplittableRandom(3));
+        assertEquals(0.5, ci.estimate(), 1e-12);
+        assertEquals(0, ci.low(), 1e-12);
+        assertEquals(2, ci.high(), 1e-12);
+    }
+
+    @Test
+    void aRateRatioWithNoEventsOnEitherSideIsNotEstimated() {
+        double[] none = {0, 0};
+        double[] ticks = {10, 10};
+        assertSame(Bootstrap.NOTHING, Bootstrap.pairedRateRatio(none, ticks, none, ticks, new SplittableRandom(1)));
+    }
 }

@@ -144,6 +144,15 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
         return Set.copyOf(Variant.faultsOf(variants));
     }
 
+    /**
+     * Whether this is the paper's kind of experiment: the builtin car in process, its variants its seeded
+     * faults. Its folders keep the columns, words and sections they always had; any other experiment's
+     * controllers can fail as controllers and its variants need a key.
+     */
+    public boolean onBuiltinFaults() {
+        return controller.equals(BUILTIN) && onlySeeded();
+    }
+
     /** Whether every variant is a seeded fault of the builtin car (the folder then names them by {@code faults=}). */
     public boolean onlySeeded() {
         return variants.stream().allMatch(v -> v instanceof Variant.Seeded);

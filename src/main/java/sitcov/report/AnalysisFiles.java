@@ -58,7 +58,7 @@ final class AnalysisFiles {
         verdict.addAll(VerdictText.lines(comparison, uniformity, config.budget()));
         if (!summary.results().isEmpty()) {
             verdict.addAll(OwnFailuresText.lines(own, reference, summary.results().size(),
-                    config.controller().equals(ExperimentConfig.BUILTIN) && config.onlySeeded()));
+                    config.onBuiltinFaults()));
         }
         OutputFile.writeLines(folder.resolve(ResultsFolder.VERDICT), verdict);
         OutputFile.writeLines(folder.resolve(ResultsFolder.OWN_FAILURES), ownFailures(own));

@@ -67,7 +67,8 @@ final class HtmlReport {
         ReportStats.append(h, CsvTable.read(folder.resolve(ResultsFolder.STATS)));
         ReportFaultTables.table2(h, CsvTable.read(folder.resolve(ResultsFolder.TABLE2)), config.drivers());
         if (java.nio.file.Files.exists(folder.resolve(ResultsFolder.OWN_FAILURES))) {
-            ReportOwnFailures.append(h, CsvTable.read(folder.resolve(ResultsFolder.OWN_FAILURES)));
+            ReportOwnFailures.append(h, CsvTable.read(folder.resolve(ResultsFolder.OWN_FAILURES)),
+                    config.onBuiltinFaults());
         }
         h.append("<h2>Figures</h2><p class=\"muted\">each opens at full size</p>\n");
         for (String fig : figures(folder)) {

@@ -13,9 +13,11 @@ final class ReportOwnFailures {
     private ReportOwnFailures() {
     }
 
-    static void append(StringBuilder h, CsvTable own) {
-        h.append("<h2>The reference car's own failures</h2><p class=\"muted\">maps on which the fault-free car had an"
-                + " accident by itself (").append(own.rows().size()).append(" in all, in <a href=\"")
+    /** {@code builtinCar}: the reference is the builtin car and its variants are its seeded faults. */
+    static void append(StringBuilder h, CsvTable own, boolean builtinCar) {
+        h.append(builtinCar ? "<h2>The reference car's own failures</h2><p class=\"muted\">maps on which the fault-free car"
+                + " had an accident by itself (" : "<h2>The reference controller's own failures</h2><p class=\"muted\">maps"
+                + " on which the reference run had an accident or its controller failed (").append(own.rows().size()).append(" in all, in <a href=\"")
                 .append(ResultsFolder.OWN_FAILURES).append("\">").append(ResultsFolder.OWN_FAILURES)
                 .append("</a>); each command replays the map from this folder.</p>\n");
         if (own.isEmpty()) {

@@ -50,7 +50,7 @@ public final class RunsCsv {
 
     public RunsCsv(ExperimentConfig config) {
         // the builtin car in process cannot fail as a controller: its folders keep the columns they always had
-        this.reasons = !config.controller().equals(ExperimentConfig.BUILTIN) || !config.onlySeeded();
+        this.reasons = !config.onBuiltinFaults();
         this.faults = config.variants();
         this.criteria = config.grid().criteria().stream().map(c -> c.key().replace('-', '_')).toList();
         List<String> map = new ArrayList<>(List.of("replication", "driver", "map_index", "candidate", "map",

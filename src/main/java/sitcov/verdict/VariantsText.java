@@ -21,7 +21,7 @@ public final class VariantsText {
 
     /** Whether the verdict gives the variants' key and findings (not for the paper's kind of experiment). */
     public static boolean shown(ExperimentConfig config) {
-        return !(config.controller().equals(ExperimentConfig.BUILTIN) && config.onlySeeded()) || config.drivers().size() < 2;
+        return !config.onBuiltinFaults() || config.drivers().size() < 2;
     }
 
     public static List<String> lines(ExperimentConfig config, VariantFindings findings) {

@@ -4,10 +4,13 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.random.RandomGenerator;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.ReplicationResult;
 import sitcov.oracle.AccidentType;
+import sitcov.stats.Bootstrap;
+import sitcov.stats.ConfidenceInterval;
 import sitcov.stats.McNemar;
 
 /**
@@ -17,7 +20,9 @@ import sitcov.stats.McNemar;
  * cell × accident type counted once), in each replication and over all of them pooled. Each other
  * driver is compared with the reference driver (random, when there is one) by a sign test on the
  * replications' rates (McNemar's exact form): a replication counts for the driver whose rate is
- * higher, ties not at all, so failures found in bursts weigh no more than one replication.
+ * higher, ties not at all, so failures found in bursts weigh no more than one replication; and the
+ * ratio of its pooled rate to the reference driver's gets a bootstrap interval over replications,
+ * which widens as it should when one replication holds most of the failures.
  */
 public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
     /** One map on which the fault-free car failed. */
@@ -27,10 +32,11 @@ public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
     /**
      * One driver's own failures: in all, per million ticks, distinct per replication (mean) and pooled;
      * {@code higher}/{@code lower} replications than the reference driver, and the sign test's p (NaN
-     * for the reference itself).
+     * for the reference itself); its rate over the reference driver's with a 95 % bootstrap interval
+     * over replications ({@link Bootstrap#NOTHING} for the reference itself).
      */
     public record DriverRate(String driver, long failures, long ticks, double perMillionTicks, double distinctMean,
-                             long distinctPooled, int higher, int lower, double p) {
+                             long distinctPooled, int higher, int lower, double p, ConfidenceInterval ratio) {
     }
 
     public OwnFailures {
@@ -38,8 +44,12 @@ public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
         rates = List.copyOf(rates);
     }
 
-    /** The failures of every driver in {@code drivers}' order, compared with {@code reference}. */
-    public static OwnFailures of(List<ReplicationResult> results, List<String> drivers, String reference) {
+    /**
+     * The failures of every driver in {@code drivers}' order, compared with {@code reference}; the rate
+     * ratios' intervals resample replications with {@code random}.
+     */
+    public static OwnFailures of(List<ReplicationResult> results, List<String> drivers, String reference,
+                                 RandomGenerator random) {
         List<Failure> all = new ArrayList<>();
         for (ReplicationResult r : results) {
             for (String d : drivers) {
@@ -59,10 +69,16 @@ public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
             Set<Long> pooled = new HashSet<>();
             int higher = 0;
             int lower = 0;
-            for (ReplicationResult r : results) {
+            int n = results.size();
+            double[] found = new double[n];
+            double[] spent = new double[n];
+            double[] theirFound = new double[n];
+            double[] theirSpent = new double[n];
+            for (int i = 0; i < n; i++) {
+                ReplicationResult r = results.get(i);
                 DriverRun run = r.of(d);
                 Set<Long> here = new HashSet<>();
-                long found = 0;
+                long failed = 0;
                 for (MapRun m : run.maps()) {
                     List<sitcov.oracle.Failure> types = types(m);
                     for (sitcov.oracle.Failure t : types) {
@@ -70,18 +86,24 @@ public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
                         here.add(key);
                         pooled.add(key);
                     }
-                    found += types.isEmpty() ? 0 : 1;
+                    failed += types.isEmpty() ? 0 : 1;
                 }
-                failures += found;
+                failures += failed;
                 ticks += run.spend().ticks();
                 distinct += here.size();
-                double rate = rate(found, run.spend().ticks());
+                found[i] = failed;
+                spent[i] = run.spend().ticks();
+                theirFound[i] = count(r.of(reference));
+                theirSpent[i] = r.of(reference).spend().ticks();
+                double rate = rate(failed, run.spend().ticks());
                 double theirs = rate(count(r.of(reference)), r.of(reference).spend().ticks());
                 higher += rate > theirs ? 1 : 0;
                 lower += rate < theirs ? 1 : 0;
             }
             rates.add(new DriverRate(d, failures, ticks, rate(failures, ticks), results.isEmpty() ? 0 : distinct / results.size(),
-                    pooled.size(), higher, lower, d.equals(reference) ? Double.NaN : McNemar.exactP(higher, lower)));
+                    pooled.size(), higher, lower, d.equals(reference) ? Double.NaN : McNemar.exactP(higher, lower),
+                    d.equals(reference) ? Bootstrap.NOTHING
+                            : Bootstrap.pairedRateRatio(found, spent, theirFound, theirSpent, random)));
         }
         return new OwnFailures(all, rates);
     }

@@ -51,7 +51,8 @@ final class AnalysisFiles {
                 SeedPlan.analysis(config.masterSeed(), "cell-deals"));
         OutputFile.writeLines(folder.resolve(ResultsFolder.STATS), StatsCsv.rows(comparison));
         String reference = config.drivers().contains("random") ? "random" : config.drivers().get(0);
-        OwnFailures own = OwnFailures.of(summary.results(), config.drivers(), reference);
+        OwnFailures own = OwnFailures.of(summary.results(), config.drivers(), reference,
+                SeedPlan.analysis(config.masterSeed(), "own-failures"));
         List<String> verdict = new ArrayList<>(ControllerFailuresText.lines(
                 ControllerFailures.of(summary.results(), config.variants())));
         verdict.addAll(VariantsText.lines(config, VariantFindings.of(summary.results(), config.variants())));

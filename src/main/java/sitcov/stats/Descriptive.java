@@ -71,6 +71,9 @@ public final class Descriptive {
         double h = (sorted.length - 1) * p; // zero-based position
         int lo = (int) Math.floor(h);
         int hi = Math.min(lo + 1, sorted.length - 1);
+        if (sorted[hi] == sorted[lo]) {
+            return sorted[lo]; // between two equal values, infinite ones too (an unbounded rate ratio)
+        }
         return sorted[lo] + (h - lo) * (sorted[hi] - sorted[lo]);
     }
 }

@@ -32,15 +32,28 @@ public final class OwnFailuresText {
                     + " distinct a replication on average, %d distinct over all %d replications", r.driver(), r.failures(),
                     r.ticks() / 1e6, r.perMillionTicks(), r.distinctMean(), r.distinctPooled(), replications);
             if (!r.driver().equals(reference)) {
-                line += String.format(Locale.ROOT, "; %s %s's rate (×%s); a higher rate than %s in %d replications, a lower"
-                        + " one in %d, sign test p = %s: %s", r.perMillionTicks() >= ref.perMillionTicks() ? "above" : "below",
-                        reference, ref.perMillionTicks() == 0 ? "n/a" : String.format(Locale.ROOT, "%.2f",
-                                r.perMillionTicks() / ref.perMillionTicks()), reference, r.higher(), r.lower(),
+                line += String.format(Locale.ROOT, "; %s %s's rate (×%s%s); a higher rate than %s in %d replications, a"
+                        + " lower one in %d, sign test p = %s: %s", r.perMillionTicks() >= ref.perMillionTicks() ? "above"
+                        : "below", reference, ref.perMillionTicks() == 0 ? "n/a" : String.format(Locale.ROOT, "%.2f",
+                                r.perMillionTicks() / ref.perMillionTicks()), ratioInterval(r), reference, r.higher(), r.lower(),
                         VerdictText.p(r.p()), r.p() < 0.05 ? (r.higher() > r.lower() ? "it finds them more often"
                                 : "it finds them less often") : "no difference in rate shown");
             }
             out.add(line + ".");
         }
         return out;
+    }
+
+    /** ", 95 % CI 0.61 to 3.20 over replications", or nothing where the ratio has no interval. */
+    private static String ratioInterval(OwnFailures.DriverRate r) {
+        if (Double.isNaN(r.ratio().low())) {
+            return "";
+        }
+        return String.format(Locale.ROOT, ", 95 %% CI %s to %s over replications", ratio(r.ratio().low()),
+                ratio(r.ratio().high()));
+    }
+
+    private static String ratio(double v) {
+        return Double.isInfinite(v) ? "∞" : String.format(Locale.ROOT, "%.2f", v);
     }
 }

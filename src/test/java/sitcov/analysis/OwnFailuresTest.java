@@ -40,7 +40,7 @@ class OwnFailuresTest {
 
     @Test
     void eachDriversOwnFailuresAreCountedPerMillionTicksAndDistinctByCellAndAccidentType() {
-        OwnFailures own = OwnFailures.of(RESULTS, List.of("random", "stress-search"), "random");
+        OwnFailures own = OwnFailures.of(RESULTS, List.of("random", "stress-search"), "random", new java.util.SplittableRandom(1));
         assertEquals(5, own.failures().size(), "maps with a fault-free accident");
         assertEquals(List.of(sitcov.oracle.Failure.LEAVEROAD, sitcov.oracle.Failure.TIMEOUT), own.failures().get(2).types());
         OwnFailures.DriverRate random = own.rates().get(0);
@@ -60,5 +60,12 @@ class OwnFailuresTest {
         assertEquals(2, stress.higher());
         assertEquals(0, stress.lower());
         assertEquals(0.5, stress.p(), 1e-12);
+        // its rate over random's: (4 / 500 000) / (1 / 500 000) = 4; resampling the two replications gives
+        // {0,0}: (6 / 500 000) / (2 / 400 000) = 2.4, one of each: 4, {1,1}: random found none, so ∞ —
+        // each with a probability of 1/4 or more, so the interval spans 2.4 to ∞
+        assertEquals(4.0, stress.ratio().estimate(), 1e-12);
+        assertEquals(2.4, stress.ratio().low(), 1e-12);
+        assertEquals(Double.POSITIVE_INFINITY, stress.ratio().high());
+        assertTrue(Double.isNaN(random.ratio().estimate()), "the reference has no ratio to itself");
     }
 }

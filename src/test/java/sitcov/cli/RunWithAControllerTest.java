@@ -44,4 +44,44 @@ class RunWithAControllerTest {
         assertEquals(ExitCode.USAGE, r.exitCode());
         assertTrue(r.err().contains("builtin:FAULTS") && r.err().contains("exec:COMMAND"), r.err());
     }
+
+    @Test
+    void aProgramAndItsPlantedBugAreComparedByTheDifferentialOracle(@TempDir Path dir) throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeTrue("true".equals(System.getenv("CI")) || python3Runs(),
+                "python3 is not installed here: the Python example controller is not tested");
+        Path p = dir.resolve("byo.properties");
+        String driver = "exec:python3 experiments/controllers/route_driver.py";
+        Files.writeString(p, "master_seed=11\ncandidates=8\nreplications=1\nbudget=ticks\ndrivers=coverage-filter,random\n"
+                + "grid=experiments/paper-grid.txt\ncontroller=" + driver + "\nvariants=" + driver + " --bug late-brake\n");
+        Path out = dir.resolve("out");
+        CliRunner r = CliRunner.run("run", p.toString(), "--out", out.toString(), "--threads", "2");
+        assertEquals(ExitCode.OK, r.exitCode(), r.err());
+        java.util.List<String> rows = Files.readAllLines(out.resolve("runs.csv"));
+        java.util.List<String> header = java.util.List.of(rows.get(0).split(","));
+        java.util.Set<String> found = new java.util.HashSet<>();
+        for (String line : rows.subList(1, rows.size())) {
+            String[] c = line.split(",", -1);
+            if (c[header.indexOf("fault")].equals("1") && c[header.indexOf("detection")].equals("FOUND")) {
+                found.add(c[header.indexOf("map")]); // a map both drivers ran is one map
+                // the bug brakes late behind the traffic: what it adds are clashes with moving cars
+                assertEquals("CLASHWITHOTHERCAR", c[header.indexOf("new_accident")], line);
+                assertTrue(Long.parseLong(c[header.indexOf("clashwithothercar")]) > 0, line);
+            }
+        }
+        assertFalse(found.isEmpty(), "on these maps the bug adds a clash: " + String.join("\n", rows));
+        String verdict = Files.readString(out.resolve("verdict.txt"));
+        assertTrue(verdict.contains("1 = route_driver.py-bug-late-brake (" + driver + " --bug late-brake)"), verdict);
+        assertTrue(verdict.contains("variant 1 (route_driver.py-bug-late-brake): fails where the reference did not on "
+                + found.size() + " of "), verdict);
+        assertTrue(Files.isRegularFile(out.resolve("controller-1.log"))
+                && Files.isRegularFile(out.resolve("controller-variant-1-1.log")), "each program's stderr is kept");
+    }
+
+    private static boolean python3Runs() {
+        try {
+            return new ProcessBuilder("python3", "--version").start().waitFor() == 0;
+        } catch (java.io.IOException | InterruptedException e) {
+            return false;
+        }
+    }
 }

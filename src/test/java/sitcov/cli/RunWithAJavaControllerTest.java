@@ -185,6 +185,28 @@ class RunWithAJavaControllerTest {
     }
 
     @Test
+    void everyDriverRunsAnExperimentOnAJavaControllerAndItsVariant(@TempDir Path dir) throws IOException {
+        Path out = dir.resolve("out");
+        List<String> drivers = List.of("coverage-filter", "random", "every-other", "coverage-search", "fault-search",
+                "stress-search");
+        Path p = dir.resolve("all.properties");
+        Files.writeString(p, "master_seed=5\ncandidates=4\nreplications=1\nbudget=ticks\ndrivers=" + String.join(",", drivers)
+                + "\ngrid=experiments/paper-grid.txt\ncontroller=java:test-lane-keeper\nvariants=java:test-crashes-at-20\n");
+        CliRunner r = CliRunner.run("run", p.toString(), "--out", out.toString(), "--threads", "2");
+        assertEquals(ExitCode.OK, r.exitCode(), r.err());
+        List<String> rows = rows(out);
+        List<String> header = List.of(rows.get(0).split(","));
+        for (String driver : drivers) {
+            long judged = rows.stream().skip(1).map(l -> l.split(",", -1))
+                    .filter(c -> c[header.indexOf("driver")].equals(driver) && c[header.indexOf("fault")].equals("1")
+                            && c[header.indexOf("detection")].equals("FOUND")
+                            && c[header.indexOf("new_accident")].equals("CONTROLLER_ERROR"))
+                    .count();
+            assertTrue(judged > 0, driver + " judged a map on which the variant crashed: " + String.join("\n", rows));
+        }
+    }
+
+    @Test
     void theBuiltinCarsSeededFaultsAreRefusedForAnotherController(@TempDir Path dir) throws IOException {
         CliRunner r = CliRunner.run("run", preset(dir, "faults=14\n").toString(), "--out", dir.resolve("out").toString());
         assertEquals(ExitCode.USAGE, r.exitCode());

@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.OptionalDouble;
 import sitcov.experiment.CampaignConfig;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.stats.FisherExact;
 import sitcov.stats.Holm;
 import sitcov.stats.KaplanMeier;
@@ -21,7 +21,7 @@ import sitcov.stats.Normal;
 public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials, List<DriverResult> drivers,
                                List<PairTest> pairs, List<Stratified> stratified, List<Overall> overall) {
     /** One driver on one fault: trials falsified of {@code trials}, the KM median (empty: not reached), distinct failures. */
-    public record DriverResult(Fault fault, String driver, int falsified, int trials, OptionalDouble medianTicks,
+    public record DriverResult(Variant fault, String driver, int falsified, int trials, OptionalDouble medianTicks,
                                int distinctFailures, List<KaplanMeier.Step> curve) {
     }
 
@@ -30,7 +30,7 @@ public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials
      * when it cannot tell the two apart whatever happened: Fisher when both falsified every trial or none,
      * the log-rank test when no trial of either was falsified.
      */
-    public record PairTest(Fault fault, String a, String b, int falsifiedA, int falsifiedB, double fisherP,
+    public record PairTest(Variant fault, String a, String b, int falsifiedA, int falsifiedB, double fisherP,
                            double fisherHolm, LogRank.Result logRank, double logRankHolm, String why) {
     }
 
@@ -49,7 +49,7 @@ public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials
 
     public static CampaignAnalysis of(CampaignConfig config, List<CampaignTrial> trials) {
         List<DriverResult> drivers = new ArrayList<>();
-        for (Fault f : config.faults()) {
+        for (Variant f : config.variants()) {
             for (String d : config.drivers()) {
                 List<CampaignTrial> mine = of(trials, f, d);
                 List<KaplanMeier.Step> curve = KaplanMeier.curve(CampaignTrial.observations(mine));
@@ -69,11 +69,11 @@ public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials
     }
 
     private static List<PairTest> pairTests(CampaignConfig config, List<CampaignTrial> trials, List<String[]> pairs) {
-        record Raw(Fault f, String a, String b, int fa, int fb, double fisher, LogRank.Result lr, String why) {
+        record Raw(Variant f, String a, String b, int fa, int fb, double fisher, LogRank.Result lr, String why) {
         }
         List<Raw> raw = new ArrayList<>();
         List<Double> family = new ArrayList<>();
-        for (Fault f : config.faults()) {
+        for (Variant f : config.variants()) {
             for (String[] p : pairs) {
                 List<CampaignTrial> a = of(trials, f, p[0]);
                 List<CampaignTrial> b = of(trials, f, p[1]);
@@ -111,7 +111,7 @@ public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials
             double o = 0;
             double e = 0;
             double v = 0;
-            for (Fault f : config.faults()) {
+            for (Variant f : config.variants()) {
                 LogRank.Result r = LogRank.test(CampaignTrial.observations(of(trials, f, p[0])),
                         CampaignTrial.observations(of(trials, f, p[1])));
                 o += r.observedA();
@@ -142,8 +142,8 @@ public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials
     }
 
     /** The trials of {@code driver} on {@code fault}, in trial order. */
-    public static List<CampaignTrial> of(List<CampaignTrial> trials, Fault fault, String driver) {
-        return trials.stream().filter(t -> t.fault() == fault && t.driver().equals(driver))
+    public static List<CampaignTrial> of(List<CampaignTrial> trials, Variant fault, String driver) {
+        return trials.stream().filter(t -> t.fault().equals(fault) && t.driver().equals(driver))
                 .sorted(java.util.Comparator.comparingInt(CampaignTrial::trial)).toList();
     }
 

@@ -5,7 +5,7 @@ import java.util.Optional;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.StopReason;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.judge.FaultOutcome;
 import sitcov.judge.Notion;
 import sitcov.oracle.Failure;
@@ -19,11 +19,11 @@ import sitcov.stats.KaplanMeier;
  * else the ticks spent capped at the budget (censored) — a map that found the fault only past the
  * budget does not count, so no driver gains from overshooting it.
  */
-public record CampaignTrial(Fault fault, String driver, int trial, long campaignSeed, String streamLabel,
+public record CampaignTrial(Variant fault, String driver, int trial, long campaignSeed, String streamLabel,
                             boolean falsified, long ticksToFailure, long survivalTicks, int mapsRun, StopReason stop,
                             Optional<MapRun> found, Optional<Failure> accident) {
     /** The trial as {@code run} (one driver's share of replication {@code trial}) recorded it. */
-    public static CampaignTrial of(Fault fault, int trial, long campaignSeed, String streamLabel, long tickBudget,
+    public static CampaignTrial of(Variant fault, int trial, long campaignSeed, String streamLabel, long tickBudget,
                                    DriverRun run) {
         long spent = 0;
         int maps = 0;
@@ -31,7 +31,7 @@ public record CampaignTrial(Fault fault, String driver, int trial, long campaign
             spent += m.ticks();
             maps++;
             Optional<FaultOutcome> hit = m.faults().stream()
-                    .filter(f -> f.variant().id() == fault.id() && f.found(Notion.DIFFERENTIAL)).findFirst();
+                    .filter(f -> f.variant().equals(fault) && f.found(Notion.DIFFERENTIAL)).findFirst();
             if (hit.isPresent()) {
                 boolean within = spent <= tickBudget;
                 return new CampaignTrial(fault, run.driver(), trial, campaignSeed, streamLabel, within, spent,

@@ -7,13 +7,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import sitcov.control.ControllerSource;
 import sitcov.drivers.Drivers;
 import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentRunner;
 import sitcov.experiment.Shard;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.report.CampaignFinisher;
 import sitcov.report.ResultsRecorder;
 import sitcov.results.CampaignManifest;
@@ -45,7 +44,7 @@ final class CampaignRun {
 
     /** What a campaign does, as its first line says it. */
     static String plan(CampaignConfig c, int threads) {
-        return "run: " + c.name() + ": campaign of " + c.faults().size() + " fault" + (c.faults().size() == 1 ? "" : "s")
+        return "run: " + c.name() + ": campaign of " + c.variants().size() + " fault" + (c.variants().size() == 1 ? "" : "s")
                 + ", " + c.trials() + " trials per driver and fault, at most " + c.tickBudget() + " ticks a trial, drivers "
                 + String.join(", ", c.drivers()) + ", on " + threads + " threads";
     }
@@ -105,7 +104,7 @@ final class CampaignRun {
         long start = System.nanoTime();
         try {
             int n = 0;
-            for (Fault f : c.faults()) {
+            for (Variant f : c.variants()) {
                 n++;
                 int code = runFault(c, f, folder.resolve(CampaignConfig.folderOf(f)), n);
                 if (code != ExitCode.OK) {
@@ -129,7 +128,7 @@ final class CampaignRun {
     }
 
     /** The trials of one fault, into {@code sub}: skipped when complete, resumed when a kill interrupted them. */
-    private int runFault(CampaignConfig c, Fault f, Path sub, int n) throws IOException, UsageException {
+    private int runFault(CampaignConfig c, Variant f, Path sub, int n) throws IOException, UsageException {
         if (ResultsRecorder.isComplete(sub)) {
             CampaignFinisher.check(Manifest.read(sub), c, f, sub);
             return ExitCode.OK;
@@ -149,9 +148,10 @@ final class CampaignRun {
         } catch (IllegalStateException e) {
             throw new UsageException("run: " + e.getMessage() + ".");
         }
-        ControllerSource controllers;
+        Controllers.Opened controllers;
         try {
-            controllers = Controllers.open(config.controller(), sub);
+            Controllers.Opened opened = Controllers.open(config, sub);
+            controllers = fork ? opened : opened.unforked();
         } catch (UsageException e) {
             recorder.close();
             throw e;
@@ -159,8 +159,9 @@ final class CampaignRun {
         ProgressListener progress = new ProgressListener(err, err == System.err && System.console() != null,
                 System::nanoTime);
         ExperimentRunner runner = new ExperimentRunner(config, drivers, Shard.WHOLE, recorder.journal(), threads,
-                System::nanoTime, List.of(recorder, progress), fork ? controllers : controllers.unforked());
-        err.println("run: fault " + f.id() + " (" + n + " of " + c.faults().size() + "), into " + sub);
+                System::nanoTime, List.of(recorder, progress), controllers.reference(), controllers.variants());
+        err.println("run: " + (f instanceof Variant.Seeded ? "fault " : "variant ") + f.id() + " (" + n + " of "
+                + c.variants().size() + "), into " + sub);
         try (controllers) {
             runner.run();
         } catch (FolderLock.Lost e) {

@@ -127,10 +127,11 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
             }
             long ticks = count(file, "tick_budget", p.getProperty("tick_budget"), Integer.MAX_VALUE);
             int trials = count(file, "trials", required(p, "trials", file), ExperimentConfig.MAX_REPLICATIONS);
-            var faults = FaultSet.parse(p.getProperty("faults", "PAPER"));
-            if (faults.isEmpty()) {
-                throw new UsageException("run: " + file + ": faults=" + p.getProperty("faults").strip() + " leaves no fault"
-                        + " to falsify; name at least one, e.g. faults=ALL.");
+            String controller = Controllers.check(p.getProperty("controller", ExperimentConfig.BUILTIN).strip());
+            List<Variant> variants = variants(p, file, controller);
+            if (variants.isEmpty()) {
+                throw new UsageException("run: " + file + ": a campaign falsifies the reference's variants, one campaign"
+                        + " each, and this one has none; name them with variants= (or faults= for the builtin car's).");
             }
             String limit = p.getProperty("candidate_limit");
             int candidateLimit = limit == null ? CampaignConfig.DEFAULT_CANDIDATE_LIMIT
@@ -138,8 +139,7 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
             FaultyRuns faultyRuns = FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.UNTIL_VERDICT.key()).strip());
             String gridFile = p.getProperty("grid");
             GridDefinition grid = gridFile == null ? GridDefinition.paper() : GridDefinition.read(Path.of(gridFile.strip()));
-            String controller = Controllers.check(p.getProperty("controller", ExperimentConfig.BUILTIN).strip());
-            return new CampaignConfig(name, seed, List.copyOf(faults), drivers(p, file, known), trials, ticks,
+            return new CampaignConfig(name, seed, variants, drivers(p, file, known), trials, ticks,
                     candidateLimit, grid, faultyRuns, controller);
         } catch (IOException e) {
             throw new UsageException("run: " + file + ": cannot read its grid: " + sitcov.results.IoReason.of(e) + ".");

@@ -130,10 +130,6 @@ final class RunCommand implements Command {
                     + " suites' replications: drop --shard.");
         }
         CampaignConfig c = campaign;
-        if (options.value("--controller").isPresent()) {
-            c = new CampaignConfig(c.name(), c.masterSeed(), c.faults(), c.drivers(), c.trials(), c.tickBudget(),
-                    c.candidateLimit(), c.grid(), c.faultyRuns(), Controllers.check(options.value("--controller").get()));
-        }
         if (options.has("--dry-run")) {
             out.println(CampaignRun.plan(c, threads) + ": sound; a dry run, so nothing ran and nothing was written.");
             return ExitCode.OK;

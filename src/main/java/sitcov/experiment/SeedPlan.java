@@ -58,9 +58,9 @@ public final class SeedPlan {
         return new RandomStreams(masterSeed).derive("analysis").stream(purpose);
     }
 
-    /** The master seed of the campaign for fault {@code faultId}: its trials' candidates and internal seeds derive from it. */
-    public static long campaignSeed(long masterSeed, int faultId) {
-        return RandomStreams.mix(masterSeed, "campaign-fault-" + faultId);
+    /** The master seed of the campaign for variant {@code variantId} (a seeded fault's id): its trials' seeds derive from it. */
+    public static long campaignSeed(long masterSeed, int variantId) {
+        return RandomStreams.mix(masterSeed, "campaign-fault-" + variantId);
     }
 
     /** The internal seed a map runs with: fixed by the master seed and the map, whichever driver runs it. */

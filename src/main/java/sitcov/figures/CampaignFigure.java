@@ -9,7 +9,7 @@ import java.nio.file.Path;
 import java.util.List;
 import sitcov.analysis.CampaignAnalysis;
 import sitcov.analysis.CampaignTrial;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.render.MapRenderer;
 import sitcov.stats.KaplanMeier;
 
@@ -36,7 +36,7 @@ public final class CampaignFigure {
     }
 
     static BufferedImage render(CampaignAnalysis a) {
-        List<Fault> faults = a.config().faults();
+        List<Variant> faults = a.config().variants();
         List<String> drivers = a.config().drivers();
         int cols = Math.min(COLUMNS, faults.size());
         int rows = (faults.size() + cols - 1) / cols;
@@ -55,7 +55,7 @@ public final class CampaignFigure {
             Axis x = Axis.upTo(a.config().tickBudget() / THOUSAND).padded();
             Axis y = Axis.steps(0.25, 4).padded();
             for (int i = 0; i < faults.size(); i++) {
-                Fault f = faults.get(i);
+                Variant f = faults.get(i);
                 int left = LEFT + (i % cols) * (PANEL_W + GAP_W);
                 int top = TOP + 20 + (i / cols) * (PANEL_H + GAP_H);
                 Chart chart = new Chart(g, left, top, PANEL_W, PANEL_H, x, y);

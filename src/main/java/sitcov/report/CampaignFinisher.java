@@ -13,7 +13,7 @@ import sitcov.experiment.DriverRun;
 import sitcov.experiment.Journal;
 import sitcov.experiment.ReplicationResult;
 import sitcov.experiment.SeedPlan;
-import sitcov.faults.Fault;
+import sitcov.judge.Variant;
 import sitcov.figures.CampaignFigure;
 import sitcov.results.CampaignCsv;
 import sitcov.results.CampaignManifest;
@@ -75,7 +75,7 @@ public final class CampaignFinisher {
      */
     public static CampaignAnalysis analyse(Path folder, CampaignConfig c) throws IOException {
         List<CampaignTrial> trials = new ArrayList<>();
-        for (Fault f : c.faults()) {
+        for (Variant f : c.variants()) {
             Path sub = folder.resolve(CampaignConfig.folderOf(f));
             Manifest m = Manifest.read(sub);
             check(m, c, f, sub);
@@ -91,13 +91,13 @@ public final class CampaignFinisher {
                 }
             }
         }
-        trials.sort(Comparator.comparing(CampaignTrial::fault).thenComparingInt(t -> c.drivers().indexOf(t.driver()))
+        trials.sort(Comparator.comparingInt((CampaignTrial t) -> t.fault().id()).thenComparingInt(t -> c.drivers().indexOf(t.driver()))
                 .thenComparingInt(CampaignTrial::trial));
         return CampaignAnalysis.of(c, trials);
     }
 
     /** Refuses a sub-folder that is not the experiment the campaign implies for {@code fault}. */
-    public static void check(Manifest m, CampaignConfig c, Fault fault, Path sub) {
+    public static void check(Manifest m, CampaignConfig c, Variant fault, Path sub) {
         Manifest expected = new Manifest(c.trialsOf(fault), m.version(), Shard.WHOLE, m.complete(), m.resumed());
         if (!expected.identity().equals(m.identity()) || !m.shard().isWhole()) {
             throw new IllegalArgumentException(sub + " holds another experiment than this campaign's trials of fault "

@@ -8,15 +8,18 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.EnumSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Properties;
+import java.util.Set;
 import java.util.TreeMap;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.ExperimentConfig;
 import sitcov.faults.FaultSet;
 import sitcov.judge.FaultyRuns;
+import sitcov.judge.Variant;
+import sitcov.judge.VariantList;
 
 /**
  * {@code campaign.properties}: what fixes a campaign's results folder (README, "Campaigns: falsifying
@@ -42,7 +45,11 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
         m.put("preset", c.name());
         m.put("sitcov_version", version);
         m.put("master_seed", Long.toString(c.masterSeed()));
-        m.put("faults", FaultSet.format(EnumSet.copyOf(c.faults())));
+        if (c.onlySeeded()) {
+            m.put("faults", FaultSet.format(Set.copyOf(Variant.faultsOf(c.variants()))));
+        } else {
+            m.put("variants", VariantList.format(c.variants()));
+        }
         m.put("drivers", String.join(",", c.drivers()));
         m.put("trials", Integer.toString(c.trials()));
         m.put("tick_budget", Long.toString(c.tickBudget()));
@@ -78,7 +85,9 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
                 throw new IllegalArgumentException(ResultsFolder.GRID + " does not match grid_sha256: the grid was edited");
             }
             CampaignConfig c = new CampaignConfig(required(p, "preset"), Long.parseLong(required(p, "master_seed")),
-                    List.copyOf(FaultSet.parse(required(p, "faults"))), List.of(required(p, "drivers").split(",")),
+                    p.containsKey("variants") ? VariantList.parse(p.getProperty("variants"))
+                            : ExperimentConfig.seeded(FaultSet.parse(required(p, "faults"))),
+                    List.of(required(p, "drivers").split(",")),
                     Integer.parseInt(required(p, "trials")), Long.parseLong(required(p, "tick_budget")),
                     Integer.parseInt(required(p, "candidate_limit")), grid, FaultyRuns.ofKey(required(p, "faulty_runs")),
                     required(p, "controller"));

@@ -24,7 +24,7 @@ public final class CampaignVerdict {
         lines.add(String.format(Locale.ROOT, "Campaign %s: %d trial%s per driver and fault, at most %d simulated ticks a"
                 + " trial, %d fault%s each its own campaign; a trial stops at its first map on which the differential"
                 + " oracle finds its fault.", c.name(), c.trials(), c.trials() == 1 ? "" : "s", c.tickBudget(),
-                c.faults().size(), c.faults().size() == 1 ? "" : "s"));
+                c.variants().size(), c.variants().size() == 1 ? "" : "s"));
         for (CampaignAnalysis.Overall o : a.overall()) {
             lines.add(String.format(Locale.ROOT, "%s falsified %d of the %d faults in at least one trial, %d in a majority"
                     + " of its trials.", o.driver(), o.anyTrial(), o.faults(), o.majority()));

@@ -28,15 +28,15 @@ import sitcov.oracle.Outcome;
  * The numbers below are worked by hand from the log-rank and Fisher formulas.
  */
 class CampaignAnalysisTest {
-    private static final Fault X = Fault.ofId(2);
-    private static final Fault Y = Fault.ofId(4);
+    private static final sitcov.judge.Variant X = new sitcov.judge.Variant.Seeded(Fault.ofId(2));
+    private static final sitcov.judge.Variant Y = new sitcov.judge.Variant.Seeded(Fault.ofId(4));
 
-    private static CampaignTrial trial(Fault f, String driver, int trial, boolean falsified, long ticks) {
+    private static CampaignTrial trial(sitcov.judge.Variant f, String driver, int trial, boolean falsified, long ticks) {
         Optional<MapRun> found = Optional.empty();
         if (falsified) {
             List<Long> none = Collections.nCopies(AccidentType.values().length, 0L);
             RunSummary run = new RunSummary(Outcome.STOPPED_AT_VERDICT, ticks, none);
-            FaultOutcome hit = new FaultOutcome(new sitcov.judge.Variant.Seeded(f), run, true, true, 1, Detection.FOUND, Optional.of(sitcov.oracle.Failure.LEAVEROAD),
+            FaultOutcome hit = new FaultOutcome(f, run, true, true, 1, Detection.FOUND, Optional.of(sitcov.oracle.Failure.LEAVEROAD),
                     true);
             found = Optional.of(new MapRun(trial, driver, 0, 0, new MapId.Seeded(trial), trial, trial, trial, List.of(), run,
                     List.of(hit)));

@@ -24,7 +24,7 @@ import sitcov.oracle.AccidentType;
 import sitcov.oracle.Outcome;
 
 class CampaignVerdictTest {
-    private static final Fault F = Fault.ofId(2);
+    private static final sitcov.judge.Variant F = new sitcov.judge.Variant.Seeded(Fault.ofId(2));
 
     private static CampaignTrial trial(String driver, int t, long ticks) {
         if (ticks < 0) {
@@ -32,7 +32,7 @@ class CampaignVerdictTest {
                     Optional.empty(), Optional.empty());
         }
         RunSummary run = new RunSummary(Outcome.STOPPED_AT_VERDICT, ticks, Collections.nCopies(AccidentType.values().length, 0L));
-        MapRun map = new MapRun(t, driver, 0, 0, new MapId.Seeded(t), t, t, t, List.of(), run, List.of(new FaultOutcome(new sitcov.judge.Variant.Seeded(F), run,
+        MapRun map = new MapRun(t, driver, 0, 0, new MapId.Seeded(t), t, t, t, List.of(), run, List.of(new FaultOutcome(F, run,
                 true, true, 1, Detection.FOUND, Optional.of(sitcov.oracle.Failure.TIMEOUT), true)));
         return new CampaignTrial(F, driver, t, 7, "replication-" + t, true, ticks, ticks, 1, StopReason.FALSIFIED,
                 Optional.of(map), Optional.of(sitcov.oracle.Failure.TIMEOUT));

@@ -59,8 +59,8 @@ final class ForkedRuns {
     }
 
     /**
-     * The reference run of the builtin car on {@code map} and, for each set of {@code planted}, the
-     * run of the builtin car with that set planted, driven to its end: a version departs where the
+     * The reference run on {@code map} and, for each set of {@code planted}, the run of the reference
+     * with that set planted, driven to its end: a version departs where the
      * first of its faults does, and one that never departs runs as the reference does.
      */
     static List<RunResult> versions(WorldMap map, long internalSeed, List<Set<Fault>> planted,

@@ -4,17 +4,17 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import sitcov.control.ControllerFactory;
+import sitcov.faults.PlantedFaults;
 import sitcov.oracle.NewAccidents;
 import sitcov.oracle.RunResult;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.world.WorldMap;
 
 /**
  * Versions compared by the differential oracle: a map run once with the reference controller and
  * once with each variant, on the same internal seed, each variant judged against the reference as a
  * faulty run is against the fault-free one (an accident is new unless the other run has the same
- * type within {@link NewAccidents#SAME_PLACE} metres). Versions of the builtin car with faults planted
- * are forked from the reference run where their faults first depart, with the same results.
+ * type within {@link NewAccidents#SAME_PLACE} metres). Versions of a controller with faults planted
+ * ({@link PlantedFaults}) are forked from the reference run where their faults first depart, with the same results.
  */
 public final class VersionJudge {
     private VersionJudge() {
@@ -23,8 +23,8 @@ public final class VersionJudge {
     public static List<VersionVerdict> judge(WorldMap map, long internalSeed, ControllerFactory reference,
                                              List<ControllerFactory> variants) {
         List<RunResult> runs = forkable(reference, variants)
-                ? ForkedRuns.versions(map, internalSeed, variants.stream().map(v -> BuiltinCar.plantedIn(v).orElseThrow())
-                        .toList(), reference)
+                ? ForkedRuns.versions(map, internalSeed, variants.stream().map(v -> ((PlantedFaults) v).planted()).toList(),
+                        reference)
                 : whole(map, internalSeed, reference, variants);
         RunResult base = runs.get(0);
         List<VersionVerdict> verdicts = new ArrayList<>(variants.size());
@@ -36,11 +36,12 @@ public final class VersionJudge {
     }
 
     /**
-     * The builtin car against versions of it with faults planted: each version is a faulty run of
-     * the reference, so it is forked from the reference run where its faults first depart.
+     * A controller against versions of it with faults planted: each version is a faulty run of the
+     * reference, so it is forked from the reference run where its faults first depart.
      */
     private static boolean forkable(ControllerFactory reference, List<ControllerFactory> variants) {
-        return reference.copyable() && variants.stream().allMatch(v -> BuiltinCar.plantedIn(v).isPresent());
+        return reference.copyable() && variants.stream()
+                .allMatch(v -> v instanceof PlantedFaults planted && planted.reference() == reference);
     }
 
     private static List<RunResult> whole(WorldMap map, long internalSeed, ControllerFactory reference,

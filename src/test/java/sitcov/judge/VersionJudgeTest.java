@@ -7,9 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.EnumSet;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinCar;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
 
@@ -22,9 +23,9 @@ class VersionJudgeTest {
         int regressions = 0;
         for (long seed = 1; seed <= 6; seed++) {
             WorldMap map = MapGenerator.generate(seed);
-            JudgedMap twins = MapRunner.judge(map, seed, PLANTED, FaultyRuns.TO_END);
+            JudgedMap twins = BuiltinRuns.judge(map, seed, PLANTED, FaultyRuns.TO_END);
             List<VersionVerdict> versions = VersionJudge.judge(map, seed, BuiltinCar.FACTORY,
-                    PLANTED.stream().map(f -> BuiltinCar.withPlanted(EnumSet.of(f))).toList());
+                    PLANTED.stream().<ControllerFactory>map(f -> BuiltinCar.withPlanted(EnumSet.of(f))).toList());
             for (int i = 0; i < PLANTED.size(); i++) {
                 FaultVerdict twin = twins.verdicts().get(i);
                 VersionVerdict version = versions.get(i);
@@ -42,7 +43,7 @@ class VersionJudgeTest {
         Fault judged = Fault.ofId(14);
         for (long seed = 1; seed <= 3; seed++) {
             WorldMap map = MapGenerator.generate(seed);
-            RunRecord both = Simulator.run(map, seed, EnumSet.of(planted, judged), RunObserver.NONE);
+            RunRecord both = BuiltinRuns.run(map, seed, EnumSet.of(planted, judged), RunObserver.NONE);
             RunRecord viaPlanted = Simulator.run(map, seed, EnumSet.of(judged), RunObserver.NONE,
                     BuiltinCar.withPlanted(EnumSet.of(planted)));
             assertEquals(both.result(), viaPlanted.result(), "map " + seed);

@@ -21,13 +21,19 @@ import org.junit.jupiter.api.Test;
 class ArchitectureTest {
 
     private static final Path MAIN = Path.of("src", "main", "java", "sitcov");
-    /** The simulated world and what it is made of: below every job that runs or reports an experiment. */
+    /**
+     * The simulated world and what it is made of: below every job that runs or reports an experiment.
+     * Not the builtin car: it is one controller among others, plugged in by those that name controllers.
+     */
     private static final Set<String> SIMULATION = Set.of(
-            "engine", "geom", "stats", "world", "faults", "control", "vehicles", "oracle", "coverage");
+            "engine", "geom", "stats", "world", "control", "faults", "sensors", "vehicles", "oracle", "coverage");
+
+    /** The only packages that may name the builtin car: the command line and the controller registry. */
+    private static final Set<String> PLUGGING_IN_THE_BUILTIN_CAR = Set.of("cli", "protocol");
 
     /** Packages that compute and write text only: no drawing, no window. */
     private static final Set<String> HEADLESS = union(SIMULATION,
-            "judge", "experiment", "drivers", "analysis", "verdict", "results", "export", "protocol");
+            "builtin", "judge", "experiment", "drivers", "analysis", "verdict", "results", "export", "protocol");
 
     /**
      * Which sitcov packages each package may import (its own is always allowed). Every arrow points down:
@@ -38,11 +44,16 @@ class ArchitectureTest {
             Map.entry("geom", Set.of()),
             Map.entry("stats", Set.of()),
             Map.entry("world", Set.of("engine", "geom")),
-            Map.entry("faults", Set.of("engine")),
-            Map.entry("control", Set.of("world", "faults", "engine", "geom")),
-            Map.entry("vehicles", Set.of("control", "world", "faults", "engine", "geom")),
-            // the controller protocol: a controller program behind the seam, and the builtin car served over it
-            Map.entry("protocol", Set.of("control", "vehicles", "world", "faults", "engine", "geom")),
+            Map.entry("control", Set.of("world", "engine", "geom")),
+            // the seeded faults, and the factory of a controller that is handed a run's faults
+            Map.entry("faults", Set.of("control", "engine")),
+            // what the world offers every controller: camera, LIDAR, radar tracks
+            Map.entry("sensors", Set.of("control", "world", "geom")),
+            Map.entry("vehicles", Set.of("control", "sensors", "world", "engine", "geom")),
+            // the builtin car: a controller that uses the sensors as any other may, with its seeded faults
+            Map.entry("builtin", Set.of("control", "faults", "sensors", "vehicles", "world", "geom")),
+            // the controller protocol and registry: a controller program behind the seam, the builtin car served over it
+            Map.entry("protocol", Set.of("control", "builtin", "vehicles", "world", "faults", "engine", "geom")),
             Map.entry("oracle", Set.of("control", "vehicles", "world", "engine", "geom")),
             Map.entry("coverage", Set.of("world", "geom")),
             // judging one map: a run, its twin with a fault, the verdict
@@ -63,7 +74,7 @@ class ArchitectureTest {
             Map.entry("viewer", union(SIMULATION, "judge", "experiment", "analysis", "verdict", "results", "render",
                     "figures", "report")),
             Map.entry("cli", union(SIMULATION, "judge", "experiment", "drivers", "analysis", "verdict", "results",
-                    "export", "render", "figures", "report", "viewer", "protocol")));
+                    "export", "render", "figures", "report", "viewer", "protocol", "builtin")));
 
     private static final Pattern SITCOV_REFERENCE = Pattern.compile("\\bsitcov\\.([a-z]+)\\.");
     private static final Pattern GUI_REFERENCE = Pattern.compile("\\b(java\\.awt|javax\\.swing)\\b");
@@ -106,6 +117,18 @@ class ArchitectureTest {
             }
         }
         assertEquals(List.of(), violations);
+    }
+
+    @Test
+    void theBuiltinCarIsAPlugInOnlyTheCommandLineAndTheRegistryName() {
+        Set<String> naming = new TreeSet<>();
+        ALLOWED.forEach((pkg, allowed) -> {
+            if (allowed.contains("builtin")) {
+                naming.add(pkg);
+            }
+        });
+        assertEquals(new TreeSet<>(PLUGGING_IN_THE_BUILTIN_CAR), naming);
+        assertTrue(!ALLOWED.get("control").contains("faults"), "the seam knows no seeded faults");
     }
 
     @Test

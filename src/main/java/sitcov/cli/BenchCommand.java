@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
+import sitcov.builtin.BuiltinCar;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
@@ -18,7 +19,6 @@ import sitcov.judge.Simulator;
 import sitcov.oracle.RunResult;
 import sitcov.protocol.ControllerStartException;
 import sitcov.protocol.ExecControllers;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.world.Layout;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
@@ -128,7 +128,8 @@ final class BenchCommand implements Command {
         int warmCandidates = Math.min(candidates, 5_000);
         err.println("bench: warming up (" + warmRuns + " runs, " + warmCandidates + " candidate maps) ...");
         for (int i = 0; i < warmRuns; i++) {
-            sink += Simulator.run(MapGenerator.generate(WARM_UP_SEED + i), WARM_UP_SEED + i).ticks();
+            sink += Simulator.run(MapGenerator.generate(WARM_UP_SEED + i), WARM_UP_SEED + i, Set.of(), RunObserver.NONE,
+                    BuiltinCar.FACTORY).result().ticks();
         }
         candidateNanos(WARM_UP_SEED, warmCandidates);
 
@@ -144,7 +145,7 @@ final class BenchCommand implements Command {
         long runNanos = 0;
         for (WorldMap map : worlds) {
             long start = System.nanoTime();
-            RunResult result = Simulator.run(map, map.seed());
+            RunResult result = Simulator.run(map, map.seed(), Set.of(), RunObserver.NONE, BuiltinCar.FACTORY).result();
             runNanos += System.nanoTime() - start;
             ticks += result.ticks();
         }
@@ -325,7 +326,7 @@ final class BenchCommand implements Command {
         List<Fault> paper = FaultSet.paper().stream().sorted().toList();
         long start = System.nanoTime();
         for (WorldMap map : maps) {
-            sink += MapRunner.judge(map, map.seed(), paper, length).ticks();
+            sink += MapRunner.judge(map, map.seed(), paper, length, BuiltinCar.FACTORY).ticks();
         }
         return (System.nanoTime() - start) / 1e9;
     }

@@ -16,9 +16,9 @@ import java.util.Set;
  * {@code bench --vs BUILD}: this build against another, in one JVM, each in a class loader of its
  * own, the same work alternated round by round so that drift in the machine's speed falls on both
  * alike. Reports the median seconds of each and the median of the round-by-round ratio. The other
- * build is driven through the public entry points every build since issue 13 has
- * ({@code MapGenerator.generate}, {@code Simulator.run}, {@code MapRunner.judge}, {@code FaultSet.paper},
- * {@code FaultyRuns}).
+ * build is driven through the public entry points every build has ({@code MapGenerator.generate},
+ * {@code Simulator.run}, {@code MapRunner.judge}, {@code FaultSet.paper}, {@code FaultyRuns}): those
+ * that run the builtin car unnamed where a build has them, else those handed its {@code FACTORY}.
  */
 final class BuildComparison {
     /** Maps a round of each kind of work: enough for a tenth of a second or more a build. */
@@ -88,17 +88,23 @@ final class BuildComparison {
         private final String name;
         private final Method generate;
         private final Method run;
+        /** The arguments {@link #run} takes after the map and seed: none, or those naming the builtin car. */
+        private final Object[] runTail;
         private final Method judge;
+        private final Object[] judgeTail;
         private final List<Object> paper;
         private final Object untilVerdict;
         /** Keeps the JIT from dropping work whose result nobody reads. */
         private long sink;
 
-        private Build(String name, Method generate, Method run, Method judge, List<Object> paper, Object untilVerdict) {
+        private Build(String name, Method generate, Method run, Object[] runTail, Method judge, Object[] judgeTail,
+                      List<Object> paper, Object untilVerdict) {
             this.name = name;
             this.generate = generate;
             this.run = run;
+            this.runTail = runTail;
             this.judge = judge;
+            this.judgeTail = judgeTail;
             this.paper = paper;
             this.untilVerdict = untilVerdict;
         }
@@ -113,10 +119,26 @@ final class BuildComparison {
                 List<Object> paper = new ArrayList<>((Set<Object>) loader.loadClass("sitcov.faults.FaultSet")
                         .getMethod("paper").invoke(null));
                 paper.sort(null);
-                return new Build(name, loader.loadClass("sitcov.world.MapGenerator").getMethod("generate", long.class),
-                        loader.loadClass("sitcov.judge.Simulator").getMethod("run", map, long.class),
-                        loader.loadClass("sitcov.judge.MapRunner").getMethod("judge", map, long.class, List.class, length),
-                        paper, length.getField("UNTIL_VERDICT").get(null));
+                Method generate = loader.loadClass("sitcov.world.MapGenerator").getMethod("generate", long.class);
+                Class<?> simulator = loader.loadClass("sitcov.judge.Simulator");
+                Class<?> mapRunner = loader.loadClass("sitcov.judge.MapRunner");
+                Object untilVerdict = length.getField("UNTIL_VERDICT").get(null);
+                try {
+                    // a build whose entry points run the builtin car unnamed
+                    return new Build(name, generate, simulator.getMethod("run", map, long.class), new Object[0],
+                            mapRunner.getMethod("judge", map, long.class, List.class, length), new Object[0], paper,
+                            untilVerdict);
+                } catch (NoSuchMethodException named) {
+                    // a build that is handed the controller: its builtin car's factory
+                    Class<?> factory = loader.loadClass("sitcov.control.ControllerFactory");
+                    Class<?> observer = loader.loadClass("sitcov.judge.RunObserver");
+                    Object builtin = loader.loadClass("sitcov.builtin.BuiltinCar").getField("FACTORY").get(null);
+                    return new Build(name, generate,
+                            simulator.getMethod("run", map, long.class, Set.class, observer, factory),
+                            new Object[] {Set.of(), observer.getField("NONE").get(null), builtin},
+                            mapRunner.getMethod("judge", map, long.class, List.class, length, factory),
+                            new Object[] {builtin}, paper, untilVerdict);
+                }
             } catch (MalformedURLException | ReflectiveOperationException | ClassCastException e) {
                 throw new UsageException("bench: --vs " + name + " is not a sitcov build this bench can drive (a folder of"
                         + " classes such as target/classes, or a jar, of any session's build): " + e);
@@ -133,12 +155,20 @@ final class BuildComparison {
             return time(first, maps, true);
         }
 
+        /** {@code first}, then {@code tail}: an entry point's arguments. */
+        private static Object[] with(Object[] tail, Object... first) {
+            Object[] all = Arrays.copyOf(first, first.length + tail.length);
+            System.arraycopy(tail, 0, all, first.length, tail.length);
+            return all;
+        }
+
         private double time(long first, int maps, boolean judged) {
             try {
                 long start = System.nanoTime();
                 for (long seed = first; seed < first + maps; seed++) {
                     Object world = generate.invoke(null, seed);
-                    Object result = judged ? judge.invoke(null, world, seed, paper, untilVerdict) : run.invoke(null, world, seed);
+                    Object result = judged ? judge.invoke(null, with(judgeTail, world, seed, paper, untilVerdict))
+                            : run.invoke(null, with(runTail, world, seed));
                     sink += result.hashCode();
                 }
                 return (System.nanoTime() - start) / 1e9;

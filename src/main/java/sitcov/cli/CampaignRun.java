@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import sitcov.builtin.BuiltinCar;
 import sitcov.drivers.Drivers;
 import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.ExperimentConfig;
@@ -140,10 +141,10 @@ final class CampaignRun {
             if (Files.isRegularFile(sub.resolve(ResultsFolder.MANIFEST))) {
                 Manifest m = Manifest.read(sub);
                 CampaignFinisher.check(m, c, f, sub);
-                recorder = ResultsRecorder.resume(sub, m, execution, System::nanoTime);
+                recorder = ResultsRecorder.resume(sub, m, execution, System::nanoTime, BuiltinCar.FACTORY);
             } else {
                 recorder = ResultsRecorder.create(sub, new Manifest(config, Version.current(), Shard.WHOLE, false, false),
-                        execution, System::nanoTime);
+                        execution, System::nanoTime, BuiltinCar.FACTORY);
             }
         } catch (IllegalStateException e) {
             throw new UsageException("run: " + e.getMessage() + ".");

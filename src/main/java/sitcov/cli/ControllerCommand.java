@@ -1,7 +1,7 @@
 package sitcov.cli;
 
-import java.io.FileInputStream;
 import java.io.FileDescriptor;
+import java.io.FileInputStream;
 import java.io.FileOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -9,10 +9,10 @@ import java.io.OutputStream;
 import java.io.PrintStream;
 import java.util.List;
 import java.util.Set;
+import sitcov.builtin.BuiltinCar;
 import sitcov.faults.Fault;
 import sitcov.protocol.ControllerServer;
 import sitcov.protocol.ProtocolException;
-import sitcov.vehicles.BuiltinCar;
 
 /**
  * {@code controller builtin [--faults F]}: the builtin car served over the protocol on stdin and

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import java.util.function.Supplier;
+import sitcov.builtin.BuiltinCar;
 import sitcov.export.OpenDrive;
 import sitcov.export.OpenScenario;
 import sitcov.export.RunRecording;
@@ -132,7 +133,7 @@ final class ExportCommand implements Command {
 
     static Planned recording(String name, String roadFile, WorldMap map, long internalSeed, Set<Fault> faults,
                              ScenarioVersion version) {
-        return new Planned(name, () -> OpenScenario.recording(RunRecording.of(map, internalSeed, faults), roadFile,
+        return new Planned(name, () -> OpenScenario.recording(RunRecording.of(map, internalSeed, faults, BuiltinCar.FACTORY), roadFile,
                 version));
     }
 

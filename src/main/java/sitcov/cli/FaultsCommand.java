@@ -3,11 +3,11 @@ package sitcov.cli;
 import java.io.PrintStream;
 import java.util.List;
 import java.util.Set;
+import sitcov.builtin.BuiltinCar;
+import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
-import sitcov.control.ControllerFactory;
 import sitcov.judge.FaultCalibration;
-import sitcov.vehicles.BuiltinCar;
 
 /**
  * {@code faults}: lists the catalogue; with {@code --calibrate --maps N}, runs every fault of a

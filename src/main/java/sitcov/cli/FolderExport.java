@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
+import sitcov.builtin.BuiltinCar;
 import sitcov.export.AsamFrame;
 import sitcov.export.OpenScenario;
 import sitcov.export.RunRecording;
@@ -106,7 +107,7 @@ final class FolderExport {
             index.add(indexLine(row, judged, base));
             long failure = judged.verdicts().get(0).newAccident().orElseThrow().tick();
             files.add(new ExportCommand.Planned(base + "-run.xosc", () -> OpenScenario.recording(
-                    RunRecording.of(map, row.map().internalSeed(), Set.of(row.fault().orElseThrow()))
+                    RunRecording.of(map, row.map().internalSeed(), Set.of(row.fault().orElseThrow()), BuiltinCar.FACTORY)
                             .until(failure + AFTER_FAILURE_TICKS), base + ".xodr", version)));
         }
         files.add(new ExportCommand.Planned(ExportCommand.INDEX, () -> String.join("\n", index) + "\n"));
@@ -118,7 +119,7 @@ final class FolderExport {
     /** The row judged again; it must give what runs.csv recorded, or the export stops. */
     private static JudgedMap checked(ResultsRows.Row row, WorldMap map) {
         JudgedMap judged = MapRunner.judge(map, row.map().internalSeed(), row.fault().stream().toList(),
-                row.config().faultyRuns());
+                row.config().faultyRuns(), BuiltinCar.FACTORY);
         Optional<String> differs = RecordedRows.differences(row, judged);
         if (differs.isPresent()) {
             throw new ExportCommand.RowMismatch("row " + row.number() + " does not run again as recorded: " + differs.get()

@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 import sitcov.analysis.Summary;
+import sitcov.builtin.BuiltinCar;
 import sitcov.report.ShardMerger;
 import sitcov.results.IoReason;
 import sitcov.results.Manifest;
@@ -46,7 +47,7 @@ final class MergeCommand implements Command {
             }
         }
         try {
-            Summary summary = ShardMerger.merge(shards, target, RunCommand.execution(1));
+            Summary summary = ShardMerger.merge(shards, target, RunCommand.execution(1), BuiltinCar.FACTORY);
             Manifest merged = Manifest.read(target);
             if (!merged.checked()) {
                 err.println("sitcov: merge: " + Manifest.uncheckedWarning(target) + " (a shard was written before checks).");

@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
+import sitcov.builtin.BuiltinCar;
 import sitcov.faults.Fault;
 import sitcov.judge.FaultVerdict;
 import sitcov.judge.FaultyRuns;
@@ -67,7 +68,8 @@ final class ReplayCommand implements Command {
                 + ".png";
         Path png = options.outputFile("--png", Path.of(name));
         Optional<Path> gif = options.outputFile("--gif");
-        JudgedMap judged = MapRunner.judge(c.map(), c.internalSeed(), c.fault().stream().toList(), c.length());
+        JudgedMap judged = MapRunner.judge(c.map(), c.internalSeed(), c.fault().stream().toList(), c.length(),
+                BuiltinCar.FACTORY);
         if (c.row().isPresent()) {
             Optional<String> differs = RecordedRows.differences(c.row().get(), judged);
             if (differs.isPresent()) {
@@ -108,7 +110,7 @@ final class ReplayCommand implements Command {
     private static void draw(Case c, JudgedMap judged, Path png, Optional<Path> gif) throws IOException {
         TrajectoryRecorder free = new TrajectoryRecorder();
         FrameRecorder freeFrames = new FrameRecorder(FRAME_TICKS);
-        var faultFree = Simulator.run(c.map(), c.internalSeed(), Set.of(), both(free, freeFrames)).result();
+        var faultFree = Simulator.run(c.map(), c.internalSeed(), Set.of(), both(free, freeFrames), BuiltinCar.FACTORY).result();
         var freeSide = new ReplayAnimation.Side(c.fault().isEmpty() ? "the fault-free run" : "without the fault", free,
                 freeFrames.frames(), faultFree, Optional.empty(), Optional.empty());
         if (c.fault().isEmpty()) {
@@ -122,7 +124,8 @@ final class ReplayCommand implements Command {
         TrajectoryRecorder faulty = new TrajectoryRecorder();
         FrameRecorder faultyFrames = new FrameRecorder(FRAME_TICKS);
         // the picture follows the faulty run to its end, even where the experiment stopped it at its verdict
-        var record = Simulator.run(c.map(), c.internalSeed(), Set.of(c.fault().get()), both(faulty, faultyFrames));
+        var record = Simulator.run(c.map(), c.internalSeed(), Set.of(c.fault().get()), both(faulty, faultyFrames),
+                BuiltinCar.FACTORY);
         FaultVerdict verdict = judged.verdicts().get(0);
         String line = ReplayPicture.verdictLine(verdict, c.length());
         var activation = record.activations().get(c.fault().get().ordinal());

@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 import sitcov.analysis.Summary;
+import sitcov.builtin.BuiltinCar;
 import sitcov.report.CampaignFinisher;
 import sitcov.report.ResultsFinisher;
 import sitcov.results.Manifest;
@@ -53,7 +54,7 @@ final class ReportCommand implements Command {
                 if (!manifest.checked()) {
                     err.println("sitcov: report: " + Manifest.uncheckedWarning(folder) + ".");
                 }
-                Summary summary = ResultsFinisher.report(folder);
+                Summary summary = ResultsFinisher.report(folder, BuiltinCar.FACTORY);
                 SummaryTable.print(out, manifest.config(), summary);
             }
             VerdictPrinter.print(out, folder);

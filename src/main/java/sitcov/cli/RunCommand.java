@@ -11,9 +11,10 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.stream.Stream;
-import sitcov.drivers.Drivers;
 import sitcov.analysis.ControllerFailures;
+import sitcov.builtin.BuiltinCar;
 import sitcov.control.ControllerSource;
+import sitcov.drivers.Drivers;
 import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentRunner;
@@ -102,7 +103,7 @@ final class RunCommand implements Command {
                 folder(options, config, shard);
             }
             ExperimentRunner runner = new ExperimentRunner(config, drivers, shard, Journal.empty(), threads, System::nanoTime,
-                    List.of());
+                    List.of(), BuiltinCar.SOURCE);
             out.println(plan(runner, config, shard, threads) + ": sound; a dry run, so nothing ran and nothing was written.");
             return ExitCode.OK;
         }
@@ -141,7 +142,7 @@ final class RunCommand implements Command {
     private static ResultsRecorder create(Path folder, Manifest manifest, Map<String, String> execution)
             throws UsageException {
         try {
-            return ResultsRecorder.create(folder, manifest, execution, System::nanoTime);
+            return ResultsRecorder.create(folder, manifest, execution, System::nanoTime, BuiltinCar.FACTORY);
         } catch (IOException e) {
             throw new UsageException("run: cannot create the results folder " + folder + ": " + IoReason.of(e, folder)
                     + "; choose a writable --out.");
@@ -186,7 +187,8 @@ final class RunCommand implements Command {
             Controllers.Opened controllers = Controllers.open(manifest.config(), folder);
             ResultsRecorder recorder;
             try {
-                recorder = ResultsRecorder.resume(folder, manifest, execution(threads), System::nanoTime);
+                recorder = ResultsRecorder.resume(folder, manifest, execution(threads), System::nanoTime,
+                        BuiltinCar.FACTORY);
             } catch (IOException | RuntimeException e) {
                 controllers.close();
                 throw e;

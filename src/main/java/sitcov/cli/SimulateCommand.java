@@ -10,21 +10,21 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Collectors;
-import sitcov.faults.Activation;
 import sitcov.control.ControllerFactory;
+import sitcov.faults.Activation;
 import sitcov.faults.Fault;
-import sitcov.protocol.ControllerChoice;
-import sitcov.protocol.ControllerStartException;
-import sitcov.protocol.ExecControllers;
 import sitcov.judge.RunObserver;
 import sitcov.judge.RunRecord;
 import sitcov.judge.Simulator;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
-import sitcov.oracle.RunResult;
 import sitcov.oracle.Margins;
 import sitcov.oracle.NearMiss;
 import sitcov.oracle.NearMisses;
+import sitcov.oracle.RunResult;
+import sitcov.protocol.ControllerChoice;
+import sitcov.protocol.ControllerStartException;
+import sitcov.protocol.ExecControllers;
 import sitcov.render.NearMissText;
 import sitcov.render.NearMissWatch;
 import sitcov.render.RunGallery;
@@ -201,7 +201,7 @@ final class SimulateCommand implements Command {
                         + " folder; name a new one.");
             }
             try {
-                gallery = new RunGallery(folder);
+                gallery = new RunGallery(folder, controller);
             } catch (IOException e) {
                 throw new UsageException("simulate: cannot create the gallery folder " + Options.shown(folder) + ": "
                         + e.getMessage() + "; choose a writable folder.");

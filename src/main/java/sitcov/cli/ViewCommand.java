@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import javax.swing.SwingUtilities;
+import sitcov.builtin.BuiltinCar;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
 import sitcov.judge.LiveRun;
@@ -56,9 +57,9 @@ final class ViewCommand implements Command {
         SwingUtilities.invokeLater(() -> new ViewerWindow(() -> {
             List<RunPainter> painters = new ArrayList<>();
             if (!faults.isEmpty()) {
-                painters.add(new RunPainter(new LiveRun(map, internal, Set.of()), twin, scale));
+                painters.add(new RunPainter(new LiveRun(map, internal, Set.of(), BuiltinCar.FACTORY), twin, scale));
             }
-            painters.add(new RunPainter(new LiveRun(map, internal, faults), faults.isEmpty() ? "seed " + map.seed()
+            painters.add(new RunPainter(new LiveRun(map, internal, faults, BuiltinCar.FACTORY), faults.isEmpty() ? "seed " + map.seed()
                     : "with " + (faults.size() == 1 ? "fault " + faults.iterator().next().id() + " ("
                             + faults.iterator().next().label() + ")" : "faults " + FaultSet.format(faults)), scale));
             return painters;

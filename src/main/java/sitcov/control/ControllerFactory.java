@@ -1,8 +1,9 @@
 package sitcov.control;
 
 /**
- * Makes the controller of one run: the builtin car with a set of faults, or a session with a
- * controller program. One factory serves every run of one worker thread.
+ * Makes the controller of one run: the builtin car, a Java controller, or a session with a
+ * controller program. One factory serves every run of one worker thread. A controller with seeded
+ * faults is made by a factory that is also handed the run's faults ({@code faults.SeededControllerFactory}).
  */
 @FunctionalInterface
 public interface ControllerFactory {

@@ -12,7 +12,6 @@ import java.util.function.LongSupplier;
 import sitcov.control.ControllerFactory;
 import sitcov.control.ControllerSource;
 import sitcov.judge.Variant;
-import sitcov.vehicles.BuiltinCar;
 
 /**
  * Runs an experiment's replications (those of one shard) in parallel and tells the listeners what
@@ -32,12 +31,6 @@ public final class ExperimentRunner {
     private final ControllerSource controllers;
     private final java.util.Map<Integer, ControllerSource> variantControllers;
     private volatile boolean halted;
-
-    /** A runner of an experiment on the builtin car. */
-    public ExperimentRunner(ExperimentConfig config, DriverFactory drivers, Shard shard, Journal journal, int threads,
-                            LongSupplier nanoClock, List<ExperimentListener> listeners) {
-        this(config, drivers, shard, journal, threads, nanoClock, listeners, BuiltinCar.SOURCE);
-    }
 
     /** A runner whose worker threads take the reference's controllers from {@code controllers} (which the caller closes). */
     public ExperimentRunner(ExperimentConfig config, DriverFactory drivers, Shard shard, Journal journal, int threads,

@@ -3,6 +3,7 @@ package sitcov.export;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
+import sitcov.control.ControllerFactory;
 import sitcov.control.Vehicle;
 import sitcov.faults.Fault;
 import sitcov.judge.RunObserver;
@@ -72,10 +73,10 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
     /** The name the car under test has in an exported scenario. */
     public static final String EGO = "ego";
 
-    /** Runs the builtin car with {@code faults} on {@code map} to its end, recording every vehicle. */
-    public static RunRecording of(WorldMap map, long internalSeed, Set<Fault> faults) {
+    /** Runs {@code controller}'s car with {@code faults} on {@code map} to its end, recording every vehicle. */
+    public static RunRecording of(WorldMap map, long internalSeed, Set<Fault> faults, ControllerFactory controller) {
         Recorder recorder = new Recorder(map);
-        RunResult result = Simulator.run(map, internalSeed, faults, recorder).result();
+        RunResult result = Simulator.run(map, internalSeed, faults, recorder, controller).result();
         List<Track> tracks = new ArrayList<>();
         for (int i = 0; i < recorder.samples.size(); i++) {
             tracks.add(new Track(i == 0 ? EGO : movingName(i - 1), recorder.ids[i], recorder.samples.get(i)));

@@ -7,7 +7,6 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.function.IntConsumer;
 import sitcov.control.ControllerFactory;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.faults.Fault;
 import sitcov.world.MapGenerator;
 
@@ -20,12 +19,7 @@ public final class FaultCalibration {
     private FaultCalibration() {
     }
 
-    /** The judged maps, in map order; each map's verdicts in fault id order. */
-    public static List<JudgedMap> run(long first, int maps, Set<Fault> faults, int threads, IntConsumer progress) {
-        return run(first, maps, faults, threads, BuiltinCar.FACTORY, progress);
-    }
-
-    /** As {@link #run(long, int, Set, int, IntConsumer)}, every run of the controller {@code car} makes. */
+    /** The judged maps, in map order, every run of the controller {@code car} makes; each map's verdicts in fault id order. */
     public static List<JudgedMap> run(long first, int maps, Set<Fault> faults, int threads, ControllerFactory car,
                                       IntConsumer progress) {
         List<Fault> ordered = new ArrayList<>(faults.isEmpty() ? EnumSet.noneOf(Fault.class) : EnumSet.copyOf(faults));

@@ -7,6 +7,7 @@ import sitcov.engine.ModelCopy;
 import sitcov.engine.SimState;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
+import sitcov.faults.SeededControllerFactory;
 import sitcov.faults.Shadow;
 import sitcov.geom.Box;
 import sitcov.geom.CellIndex;
@@ -14,7 +15,6 @@ import sitcov.oracle.AccidentDetector;
 import sitcov.oracle.Margins;
 import sitcov.oracle.NearMisses;
 import sitcov.oracle.RunResult;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.vehicles.Scene;
 import sitcov.vehicles.Telemetry;
 import sitcov.world.Layout;
@@ -46,12 +46,10 @@ public final class LiveRun {
     private boolean copyable;
     private boolean ended;
 
-    /** A run of the builtin car with {@code faults} switched on. */
-    public LiveRun(WorldMap map, long internalSeed, Set<Fault> faults) {
-        this(map, internalSeed, faults, BuiltinCar.FACTORY);
-    }
-
-    /** A run of the controller {@code controller} makes, with {@code faults} switched on (for a controller that knows them). */
+    /**
+     * A run of the controller {@code controller} makes, with {@code faults} switched on: a controller
+     * with seeded faults is handed the run's switchboard, any other knows no faults.
+     */
     public LiveRun(WorldMap map, long internalSeed, Set<Fault> faults, ControllerFactory controller) {
         this(map, internalSeed, faults, Set.of(), controller);
     }
@@ -63,18 +61,23 @@ public final class LiveRun {
         this.state = new SimState(internalSeed);
         this.switchboard = watched.isEmpty() ? new FaultSwitchboard(faults, state)
                 : FaultSwitchboard.shadowing(watched, state);
-        this.scene = Scene.start(map, state, switchboard, controller);
+        this.scene = Scene.start(map, state, handing(switchboard, controller));
         this.detector = new AccidentDetector(scene.telemetry());
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
         this.nearMisses = new NearMisses(scene.telemetry());
         this.copyable = controller.copyable();
     }
 
+    /** The controllers of {@code controller}, each handed {@code board} when it knows seeded faults. */
+    private static ControllerFactory handing(FaultSwitchboard board, ControllerFactory controller) {
+        return controller instanceof SeededControllerFactory seeded ? run -> seeded.start(run, board) : controller;
+    }
+
     /**
      * A checkpoint of this run: an independent run in this one's state (scene, controller, random
      * streams, schedule, detector, near-miss watcher) that steps on exactly as this one would. The
-     * map is shared: nothing changes it. Only a run of the builtin car can be copied; a controller
-     * in another process keeps state no copy can reach.
+     * map is shared: nothing changes it. Only a run whose controller keeps all its state in the run
+     * (the builtin car) can be copied; a controller in another process keeps state no copy can reach.
      *
      * @throws IllegalStateException if the run's controller cannot be copied
      */

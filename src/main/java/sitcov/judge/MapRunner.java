@@ -8,7 +8,6 @@ import java.util.function.Function;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.world.WorldMap;
 
 /**
@@ -20,17 +19,10 @@ public final class MapRunner {
     private MapRunner() {
     }
 
-    /** Judges every fault of {@code faults}, in the list's order, each faulty run driven to its end. */
-    public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults) {
-        return judge(map, internalSeed, faults, FaultyRuns.TO_END);
-    }
-
-    /** Judges every fault of {@code faults}, in the list's order, each faulty run as long as {@code length} says. */
-    public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length) {
-        return judge(map, internalSeed, faults, length, BuiltinCar.FACTORY);
-    }
-
-    /** As {@link #judge(WorldMap, long, List, FaultyRuns)}, every run driven by the controller {@code controller} makes. */
+    /**
+     * Judges every fault of {@code faults}, in the list's order, each faulty run as long as
+     * {@code length} says, every run driven by the controller {@code controller} makes.
+     */
     public static JudgedMap judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length,
                                   ControllerFactory controller) {
         if (forks(faults, controller)) {

@@ -4,7 +4,6 @@ import java.util.Set;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.world.WorldMap;
 
 /**
@@ -15,16 +14,7 @@ public final class Simulator {
     private Simulator() {
     }
 
-    /** A fault-free run. */
-    public static RunResult run(WorldMap map, long internalSeed) {
-        return run(map, internalSeed, Set.of(), RunObserver.NONE).result();
-    }
-
-    public static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer) {
-        return run(map, internalSeed, faults, observer, BuiltinCar.FACTORY);
-    }
-
-    /** A run of the controller {@code controller} makes (the builtin car, or a controller program). */
+    /** A run of the controller {@code controller} makes, with {@code faults} switched on (for a controller with seeded faults). */
     public static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer,
                                 ControllerFactory controller) {
         return run(map, internalSeed, faults, observer, null, controller);

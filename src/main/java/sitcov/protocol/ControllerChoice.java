@@ -4,10 +4,10 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
+import sitcov.builtin.BuiltinCar;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
-import sitcov.vehicles.BuiltinCar;
 
 /**
  * Which controller drives the car under test, as a preset or the command line names it:

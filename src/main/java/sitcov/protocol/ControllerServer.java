@@ -13,12 +13,14 @@ import sitcov.control.RunStart;
 import sitcov.engine.RandomStreams;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
+import sitcov.faults.SeededControllerFactory;
 import sitcov.world.RoadNetwork;
 
 /**
  * The controller's side of the protocol: serves any {@link ControllerFactory} over a pair of
  * streams (stdin and stdout for {@code sitcov controller builtin}). Answers sitcov's hello, starts
- * a controller at each reset on the map the message carries, answers each observation with the
+ * a controller at each reset on the map the message carries (a controller with seeded faults is
+ * handed a switchboard with the faults the reset names), answers each observation with the
  * controller's command and the fault activations of the tick, and tells it the end. Returns at
  * the end of its input.
  */
@@ -99,8 +101,10 @@ public final class ControllerServer {
         RoadNetwork roads = RoadNetwork.of(reset.map().layout());
         run.observation = new WireObservation(roads, reset.map().layout().target().orElseThrow());
         run.activity = new FaultActivity(switchboard);
-        run.controller = controllers.start(new RunStart(reset.map(), reset.internalSeed(),
-                new RandomStreams(reset.internalSeed()), () -> run.tick, switchboard));
+        RunStart start = new RunStart(reset.map(), reset.internalSeed(), new RandomStreams(reset.internalSeed()),
+                () -> run.tick);
+        run.controller = controllers instanceof SeededControllerFactory seeded ? seeded.start(start, switchboard)
+                : controllers.start(start);
         return run;
     }
 }

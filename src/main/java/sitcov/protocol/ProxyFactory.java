@@ -1,15 +1,18 @@
 package sitcov.protocol;
 
 import sitcov.control.Controller;
-import sitcov.control.ControllerFactory;
 import sitcov.control.RunStart;
+import sitcov.faults.FaultSwitchboard;
+import sitcov.faults.SeededControllerFactory;
 
 /**
  * One worker thread's controller program: connected at its first run, reused run after run, and
  * connected afresh after it failed. A run whose controller cannot be started ends at its first
- * tick with CONTROLLER_ERROR and the reason; the experiment goes on.
+ * tick with CONTROLLER_ERROR and the reason; the experiment goes on. The run's faults go out with
+ * its reset, and the activations the program reports come back onto the run's board: a program
+ * may serve a controller with seeded faults ({@code sitcov controller builtin}).
  */
-public final class ProxyFactory implements ControllerFactory, AutoCloseable {
+public final class ProxyFactory implements SeededControllerFactory, AutoCloseable {
     /** Makes a fresh, handshaken session: starts a process, or connects a pair of streams. */
     @FunctionalInterface
     interface Connector {
@@ -26,7 +29,7 @@ public final class ProxyFactory implements ControllerFactory, AutoCloseable {
     }
 
     @Override
-    public Controller start(RunStart run) {
+    public Controller start(RunStart run, FaultSwitchboard faults) {
         // a controller that went away between runs (its write fails) gets one fresh start
         for (int attempt = 0; attempt < 2; attempt++) {
             if (session == null || session.isDead()) {
@@ -37,8 +40,8 @@ public final class ProxyFactory implements ControllerFactory, AutoCloseable {
                     return ProxyController.failed(e.getMessage());
                 }
             }
-            if (session.reset(run)) {
-                return new ProxyController(session, run.faults(), tickTimeoutMillis);
+            if (session.reset(run, faults.activeFaults())) {
+                return new ProxyController(session, faults, tickTimeoutMillis);
             }
         }
         return ProxyController.failed("the controller could not be sent the run's reset");

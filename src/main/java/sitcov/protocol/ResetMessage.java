@@ -27,7 +27,7 @@ import sitcov.world.WorldMap;
  */
 record ResetMessage(WorldMap map, long internalSeed, Set<Fault> faults) {
 
-    static void write(JsonWriter w, RunStart run) {
+    static void write(JsonWriter w, RunStart run, Set<Fault> faults) {
         Layout layout = run.map().layout();
         w.reset().beginObject().member("type", "reset").name("map").beginObject().member("seed", layout.seed());
         w.name("roads").beginArray();
@@ -49,7 +49,7 @@ record ResetMessage(WorldMap map, long internalSeed, Set<Fault> faults) {
         w.name("start").beginObject().member("x", start.position().x()).member("y", start.position().y())
                 .member("heading", start.heading().bearing()).endObject();
         w.endObject().member("internal_seed", run.internalSeed()).name("faults").beginArray();
-        for (Fault f : run.faults().activeFaults()) {
+        for (Fault f : faults) {
             w.value(f.id());
         }
         w.endArray().endObject();

@@ -1,12 +1,14 @@
 package sitcov.protocol;
 
 import java.io.IOException;
+import java.util.Set;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 import sitcov.control.ControllerFailure;
 import sitcov.control.Observation;
 import sitcov.control.RunEnd;
 import sitcov.control.RunStart;
+import sitcov.faults.Fault;
 
 /**
  * sitcov's side of one connection to a controller, after a successful handshake: it sends resets,
@@ -86,12 +88,12 @@ final class Session implements AutoCloseable {
         return dead;
     }
 
-    /** Starts a run; false when the controller could not be written to (it is then dead). */
-    boolean reset(RunStart run) {
+    /** Starts a run with {@code faults} switched on; false when the controller could not be written to (it is then dead). */
+    boolean reset(RunStart run, Set<Fault> faults) {
         if (inRun) {
             end(new RunEnd("STOPPED", -1));
         }
-        ResetMessage.write(writer, run);
+        ResetMessage.write(writer, run, faults);
         try {
             lines.write(writer);
             inRun = true;

@@ -6,14 +6,15 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import sitcov.control.ControllerFactory;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapRun;
 import sitcov.faults.Fault;
-import sitcov.judge.Variant;
 import sitcov.judge.FaultVerdict;
 import sitcov.judge.JudgedMap;
 import sitcov.judge.MapRunner;
 import sitcov.judge.Notion;
+import sitcov.judge.Variant;
 import sitcov.results.ResultsFolder;
 import sitcov.results.ResultsRows;
 
@@ -31,7 +32,9 @@ public final class ReplayGallery {
         return folder.resolve(ResultsFolder.REPLAYS).resolve("fault-" + variant.id() + ".png");
     }
 
-    public static void write(Path folder, ExperimentConfig config, List<MapRun> inOrder) throws IOException {
+    /** Draws the pictures of a folder of the builtin car; {@code builtin} makes its runs (a folder of another controller has none). */
+    public static void write(Path folder, ExperimentConfig config, List<MapRun> inOrder, ControllerFactory builtin)
+            throws IOException {
         if (!config.controller().equals(ExperimentConfig.BUILTIN)) {
             // the pictures run the builtin car; a folder that tested another controller shows none
             return;
@@ -44,7 +47,7 @@ public final class ReplayGallery {
                     Fault fault = seeded.fault();
                     pictures.add(() -> {
                         try {
-                            draw(folder, config, run, fault);
+                            draw(folder, config, run, fault, builtin);
                         } catch (IOException e) {
                             throw new UncheckedIOException(e);
                         }
@@ -61,13 +64,14 @@ public final class ReplayGallery {
         }
     }
 
-    private static void draw(Path folder, ExperimentConfig config, MapRun run, Fault fault) throws IOException {
+    private static void draw(Path folder, ExperimentConfig config, MapRun run, Fault fault, ControllerFactory builtin)
+            throws IOException {
         var map = ResultsRows.worldMap(folder, run);
-        JudgedMap judged = MapRunner.judge(map, run.internalSeed(), List.of(fault), config.faultyRuns());
+        JudgedMap judged = MapRunner.judge(map, run.internalSeed(), List.of(fault), config.faultyRuns(), builtin);
         FaultVerdict verdict = judged.verdicts().get(0);
         Path file = picture(folder, new Variant.Seeded(fault));
         Files.createDirectories(file.getParent());
         MapRenderer.writeAtomically(new ReplayPicture(PIXELS_PER_METRE).render(map, run.internalSeed(), verdict,
-                config.faultyRuns()), file);
+                config.faultyRuns(), builtin), file);
     }
 }

@@ -6,6 +6,7 @@ import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
 import java.util.Locale;
+import sitcov.control.ControllerFactory;
 import sitcov.faults.Activation;
 import sitcov.judge.FaultVerdict;
 import sitcov.judge.FaultyRuns;
@@ -91,14 +92,14 @@ public final class ReplayPicture {
                         ? " (the experiment stopped this run there)" : ""); // a TIMEOUT is the run's own end
     }
 
-    /** Runs the map without and with {@code verdict}'s fault (the faulty run to its end) and draws both. */
+    /** Runs the map without and with {@code verdict}'s fault (the faulty run to its end), each run {@code controller}'s, and draws both. */
     public BufferedImage render(WorldMap map, long internalSeed, sitcov.judge.FaultVerdict verdict,
-                                sitcov.judge.FaultyRuns length) {
+                                sitcov.judge.FaultyRuns length, ControllerFactory controller) {
         TrajectoryRecorder free = new TrajectoryRecorder();
-        RunResult faultFree = sitcov.judge.Simulator.run(map, internalSeed, java.util.Set.of(), free).result();
+        RunResult faultFree = sitcov.judge.Simulator.run(map, internalSeed, java.util.Set.of(), free, controller).result();
         TrajectoryRecorder faulty = new TrajectoryRecorder();
         sitcov.faults.Fault fault = verdict.seededFault().orElseThrow();
-        var record = sitcov.judge.Simulator.run(map, internalSeed, java.util.Set.of(fault), faulty);
+        var record = sitcov.judge.Simulator.run(map, internalSeed, java.util.Set.of(fault), faulty, controller);
         return render(map, new Side(free, faultFree), new Side(faulty, record.result()),
                 record.activations().get(fault.ordinal()), verdictLine(verdict, length), verdict.newAccident());
     }

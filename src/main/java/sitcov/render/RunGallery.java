@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import java.util.TreeSet;
+import sitcov.control.ControllerFactory;
 import sitcov.judge.Simulator;
 import sitcov.oracle.Accident;
 import sitcov.oracle.Outcome;
@@ -24,11 +25,14 @@ public final class RunGallery {
     private static final int PIXELS_PER_METRE = 6;
 
     private final Path folder;
+    private final ControllerFactory controller;
     private final List<String> rows = new ArrayList<>();
     private final List<String> files = new ArrayList<>();
 
-    public RunGallery(Path folder) throws IOException {
+    /** A gallery in {@code folder} of runs the controller {@code controller} makes. */
+    public RunGallery(Path folder, ControllerFactory controller) throws IOException {
         this.folder = folder;
+        this.controller = controller;
         Files.createDirectories(folder);
     }
 
@@ -40,7 +44,7 @@ public final class RunGallery {
     /** Runs the map again with a recorder (runs are deterministic) and draws it. */
     public void add(WorldMap map, RunResult result) throws IOException {
         TrajectoryRecorder recorder = new TrajectoryRecorder();
-        RunResult again = Simulator.run(map, result.internalSeed(), Set.of(), recorder).result();
+        RunResult again = Simulator.run(map, result.internalSeed(), Set.of(), recorder, controller).result();
         if (!again.equals(result)) {
             throw new IllegalStateException("map " + map.seed() + " internal seed " + result.internalSeed()
                     + " did not run the same way twice: " + result + " then " + again);

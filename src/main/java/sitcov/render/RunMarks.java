@@ -42,7 +42,7 @@ final class RunMarks {
     }
 
     static Color colour(TrajectoryRecorder t, int i) {
-        return t.crossing(i) ? CROSSING : t.stage(i).isPassing() ? OVERTAKING : DRIVING;
+        return t.crossing(i) ? CROSSING : t.overtaking(i) ? OVERTAKING : DRIVING;
     }
 
     static Box body(double x, double y, double heading) {

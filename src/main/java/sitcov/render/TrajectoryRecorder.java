@@ -2,24 +2,22 @@ package sitcov.render;
 
 import java.util.Arrays;
 import java.util.List;
+import sitcov.control.Vehicle;
 import sitcov.judge.RunObserver;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentDetector;
 import sitcov.oracle.NearMisses;
-import sitcov.control.Vehicle;
-import sitcov.vehicles.OvertakingStage;
 import sitcov.vehicles.Telemetry;
 
 /**
  * Records the autonomous car's path through one run, one entry per tick: where its front centre
- * was, where it faced, how fast it went, its overtaking stage and whether it was crossing a
+ * was, where it faced, how fast it went, and whether its controller said it was overtaking or crossing a
  * junction. Entries are kept in growable primitive arrays, so a 5000-tick run costs a few hundred
  * kilobytes, not 5000 objects. Also keeps the detector's list of accidents, which is final once the
  * run is over, and watches the run's near misses ({@link NearMissWatch}) so that a picture can say
  * where each least value was reached.
  */
 public final class TrajectoryRecorder implements RunObserver {
-    private static final OvertakingStage[] STAGES = OvertakingStage.values();
     private static final int INITIAL_CAPACITY = 256;
 
     private int ticks;
@@ -28,7 +26,7 @@ public final class TrajectoryRecorder implements RunObserver {
     private double[] ys = new double[INITIAL_CAPACITY];
     private double[] headings = new double[INITIAL_CAPACITY];
     private double[] speeds = new double[INITIAL_CAPACITY];
-    private byte[] stages = new byte[INITIAL_CAPACITY];
+    private boolean[] overtaking = new boolean[INITIAL_CAPACITY];
     private boolean[] crossings = new boolean[INITIAL_CAPACITY];
     private List<Accident> accidents = List.of();
     private final NearMissWatch nearMisses = new NearMissWatch();
@@ -44,7 +42,7 @@ public final class TrajectoryRecorder implements RunObserver {
         ys[ticks] = car.y();
         headings[ticks] = car.heading();
         speeds[ticks] = car.speed();
-        stages[ticks] = (byte) stageOf(run.selfReport().stage()).ordinal();
+        overtaking[ticks] = run.selfReport().overtaking();
         crossings[ticks] = run.selfReport().crossingJunction();
         ticks++;
         accidents = detector.accidents(); // a read-only view of the detector's list
@@ -66,15 +64,6 @@ public final class TrajectoryRecorder implements RunObserver {
         return ticks - 1;
     }
 
-    private static OvertakingStage stageOf(String reported) {
-        for (OvertakingStage s : STAGES) {
-            if (s.name().equals(reported)) {
-                return s;
-            }
-        }
-        return OvertakingStage.NOT_OVERTAKING;
-    }
-
     private void grow() {
         int capacity = xs.length * 2;
         tickNumbers = Arrays.copyOf(tickNumbers, capacity);
@@ -82,7 +71,7 @@ public final class TrajectoryRecorder implements RunObserver {
         ys = Arrays.copyOf(ys, capacity);
         headings = Arrays.copyOf(headings, capacity);
         speeds = Arrays.copyOf(speeds, capacity);
-        stages = Arrays.copyOf(stages, capacity);
+        overtaking = Arrays.copyOf(overtaking, capacity);
         crossings = Arrays.copyOf(crossings, capacity);
     }
 
@@ -120,9 +109,10 @@ public final class TrajectoryRecorder implements RunObserver {
         return speeds[i];
     }
 
-    public OvertakingStage stage(int i) {
+    /** Whether the car's controller said it was overtaking (passing a parked car) in entry {@code i}'s tick. */
+    public boolean overtaking(int i) {
         check(i);
-        return STAGES[stages[i]];
+        return overtaking[i];
     }
 
     /** Whether the car was turning through a junction square. */

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import sitcov.analysis.Summary;
+import sitcov.control.ControllerFactory;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.Journal;
@@ -56,10 +57,13 @@ public final class ResultsFinisher {
         return results;
     }
 
-    /** Writes everything a complete folder holds; returns the summary the tables were made from. */
-    public static Summary finish(Path folder, Manifest manifest, Journal journal, Map<String, String> execution)
-            throws IOException {
-        Summary summary = writeResults(folder, manifest, journal);
+    /**
+     * Writes everything a complete folder holds; returns the summary the tables were made from. The
+     * replay pictures of a folder of the builtin car are runs {@code builtin} makes.
+     */
+    public static Summary finish(Path folder, Manifest manifest, Journal journal, Map<String, String> execution,
+                                 ControllerFactory builtin) throws IOException {
+        Summary summary = writeResults(folder, manifest, journal, builtin);
         writeExecution(folder, execution);
         manifest.complete(true).write(folder);
         return summary;
@@ -73,18 +77,19 @@ public final class ResultsFinisher {
      * @throws IllegalStateException when a run holds the folder
      * @throws IllegalArgumentException when the folder is incomplete or was changed by hand
      */
-    public static Summary report(Path folder) throws IOException {
+    public static Summary report(Path folder, ControllerFactory builtin) throws IOException {
         Manifest manifest = Manifest.read(folder);
         if (!manifest.complete()) {
             throw new IllegalArgumentException(folder + " is not complete; finish it with 'run --resume " + folder + "'");
         }
         try (FolderLock lock = FolderLock.claim(folder)) {
             ResultsFolder.sweepTemporaries(folder);
-            return writeResults(folder, manifest, JournalFiles.read(folder, manifest));
+            return writeResults(folder, manifest, JournalFiles.read(folder, manifest), builtin);
         }
     }
 
-    private static Summary writeResults(Path folder, Manifest manifest, Journal journal) throws IOException {
+    private static Summary writeResults(Path folder, Manifest manifest, Journal journal, ControllerFactory builtin)
+            throws IOException {
         ExperimentConfig config = manifest.config();
         List<ReplicationResult> results = results(manifest, journal);
         JournalFiles.write(folder, manifest, journal);
@@ -103,7 +108,7 @@ public final class ResultsFinisher {
             ExperimentFigures.writeAll(config, summary, journal, folder);
             AnalysisFiles.write(config, summary, folder);
             List<MapRun> inOrder = JournalFiles.inOrder(config, journal).stream().map(Journal.Entry::run).toList();
-            ReplayGallery.write(folder, config, inOrder);
+            ReplayGallery.write(folder, config, inOrder, builtin);
             OutputFile.writeString(folder.resolve(ResultsFolder.REPORT), HtmlReport.html(folder, config, inOrder));
         }
         return summary;

@@ -10,6 +10,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.function.LongSupplier;
 import sitcov.analysis.Summary;
+import sitcov.control.ControllerFactory;
 import sitcov.experiment.ExperimentEvent;
 import sitcov.experiment.ExperimentListener;
 import sitcov.experiment.Journal;
@@ -37,12 +38,16 @@ public final class ResultsRecorder implements ExperimentListener {
     private final LongSupplier nanoClock;
     private final long start;
     private final FolderLock lock;
+    /** Makes the replay pictures' runs when the folder is finished (the builtin car's; see {@link ResultsFinisher#finish}). */
+    private final ControllerFactory builtin;
     private JournalWriter writer;
     private Summary summary;
 
     private ResultsRecorder(Path folder, FolderLock lock, Manifest manifest, Journal journal,
-                            Map<String, String> execution, LongSupplier nanoClock) throws IOException {
+                            Map<String, String> execution, LongSupplier nanoClock, ControllerFactory builtin)
+            throws IOException {
         this.folder = folder;
+        this.builtin = builtin;
         this.lock = lock;
         this.manifest = manifest;
         this.journal = journal;
@@ -54,13 +59,14 @@ public final class ResultsRecorder implements ExperimentListener {
 
     /**
      * Claims an empty (or new) folder: its manifest, marked incomplete, and empty journal files.
-     * {@code execution} holds what the folder's execution.properties should say (threads, JDK, ...).
+     * {@code execution} holds what the folder's execution.properties should say (threads, JDK, ...);
+     * {@code builtin} makes the runs of a builtin folder's replay pictures when it is finished.
      *
      * @throws IllegalStateException when another run holds the folder
      * @throws IllegalArgumentException when the folder holds files already
      */
     public static ResultsRecorder create(Path folder, Manifest manifest, Map<String, String> execution,
-                                         LongSupplier nanoClock) throws IOException {
+                                         LongSupplier nanoClock, ControllerFactory builtin) throws IOException {
         Files.createDirectories(folder);
         FolderLock lock = FolderLock.claim(folder);
         if (!ResultsFolder.holdsNothing(folder)) {
@@ -77,7 +83,7 @@ public final class ResultsRecorder implements ExperimentListener {
             OutputFile.writeString(folder.resolve(ResultsFolder.TIMINGS), check.header(TimingsCsv.HEADER, false) + "\n");
             // the manifest last: a folder that has one has its journal files too
             manifest.complete(false).write(folder);
-            return new ResultsRecorder(folder, lock, manifest, Journal.empty(), execution, nanoClock);
+            return new ResultsRecorder(folder, lock, manifest, Journal.empty(), execution, nanoClock, builtin);
         } catch (IOException | RuntimeException e) {
             lock.close(); // a full disk must not leave the folder claimed
             throw e;
@@ -90,7 +96,7 @@ public final class ResultsRecorder implements ExperimentListener {
      * situation file changed by hand is refused. The manifest says so when that changes the results.
      */
     public static ResultsRecorder resume(Path folder, Manifest manifest, Map<String, String> execution,
-                                         LongSupplier nanoClock) throws IOException {
+                                         LongSupplier nanoClock, ControllerFactory builtin) throws IOException {
         FolderLock lock = FolderLock.claim(folder);
         Journal journal;
         try {
@@ -105,7 +111,7 @@ public final class ResultsRecorder implements ExperimentListener {
         resumed.write(folder);
         Map<String, String> facts = new LinkedHashMap<>(execution);
         facts.put("resumed_with_maps", Integer.toString(journal.size()));
-        return new ResultsRecorder(folder, lock, resumed, journal, facts, nanoClock);
+        return new ResultsRecorder(folder, lock, resumed, journal, facts, nanoClock, builtin);
     }
 
     /** What the folder already held: the runner replays it instead of simulating again. */
@@ -135,7 +141,7 @@ public final class ResultsRecorder implements ExperimentListener {
                 writer.close();
                 writer = null;
                 execution.put("wall_seconds", String.format(Locale.ROOT, "%.1f", (nanoClock.getAsLong() - start) / 1e9));
-                summary = ResultsFinisher.finish(folder, manifest, JournalFiles.read(folder, manifest), execution);
+                summary = ResultsFinisher.finish(folder, manifest, JournalFiles.read(folder, manifest), execution, builtin);
                 lock.close();
             } catch (IOException e) {
                 throw new UncheckedIOException("could not complete the results in " + folder + ": " + e.getMessage(), e);

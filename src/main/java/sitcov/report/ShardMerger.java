@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.stream.Stream;
 import sitcov.analysis.Summary;
+import sitcov.control.ControllerFactory;
 import sitcov.experiment.DriverSpend;
 import sitcov.experiment.Journal;
 import sitcov.experiment.Shard;
@@ -31,7 +32,8 @@ public final class ShardMerger {
      * @throws IllegalArgumentException naming the folder and what is wrong with it, or when {@code out} holds files
      * @throws IllegalStateException when another run or merge is writing into {@code out}
      */
-    public static Summary merge(List<Path> shards, Path out, Map<String, String> execution) throws IOException {
+    public static Summary merge(List<Path> shards, Path out, Map<String, String> execution, ControllerFactory builtin)
+            throws IOException {
         if (shards.isEmpty()) {
             throw new IllegalArgumentException("name the shard folders to merge");
         }
@@ -108,7 +110,7 @@ public final class ShardMerger {
             }
             Map<String, String> facts = new TreeMap<>(execution);
             facts.put("merged_shards", String.join(" ", Stream.of(byK).skip(1).map(Path::toString).toList()));
-            return ResultsFinisher.finish(out, merged, journal, facts);
+            return ResultsFinisher.finish(out, merged, journal, facts, builtin);
         }
     }
 

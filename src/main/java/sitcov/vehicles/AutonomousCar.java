@@ -3,6 +3,7 @@ package sitcov.vehicles;
 import sitcov.control.Command;
 import sitcov.control.Controller;
 import sitcov.control.ControllerFailure;
+import sitcov.control.Observation;
 import sitcov.control.SelfReport;
 import sitcov.control.Vehicle;
 import sitcov.engine.SimState;
@@ -124,6 +125,11 @@ public final class AutonomousCar implements Bodied, Steppable {
     /** Whether its front stands on the Target, in the Target's lane (the run is then over). */
     public boolean hasReachedTarget() {
         return reachedTarget;
+    }
+
+    /** What the car observes: refreshed at the start of each tick, before its controller steps. */
+    Observation observation() {
+        return observation;
     }
 
     /** What the controller said of itself in the last tick: information only. */

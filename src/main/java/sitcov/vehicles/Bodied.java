@@ -4,7 +4,7 @@ import sitcov.control.Vehicle;
 import sitcov.geom.Box;
 
 /** A vehicle whose pose and speed are those of a {@link Body}: what it shows is what the body holds. */
-interface Bodied extends Vehicle {
+public interface Bodied extends Vehicle {
     Body body();
 
     @Override

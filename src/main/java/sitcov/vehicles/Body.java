@@ -9,7 +9,7 @@ import sitcov.geom.Box;
  * about its rear axle, {@code pivot} metres behind its front, as a real car does: its body
  * follows the inside of a bend rather than swinging its tail out across the kerb.
  */
-final class Body {
+public final class Body {
     private double pivot;
     private double x;
     private double y;
@@ -21,7 +21,7 @@ final class Body {
     /** The footprint last handed out, while the body has not moved since: most ticks ask for it many times. */
     private Box footprint;
 
-    Body(double x, double y, double heading, double pivot) {
+    public Body(double x, double y, double heading, double pivot) {
         this.pivot = pivot;
         this.x = x;
         this.y = y;
@@ -34,27 +34,27 @@ final class Body {
         headingDy = Bearing.dy(heading);
     }
 
-    double x() {
+    public double x() {
         return x;
     }
 
-    double y() {
+    public double y() {
         return y;
     }
 
-    double heading() {
+    public double heading() {
         return heading;
     }
 
-    double headingDx() {
+    public double headingDx() {
         return headingDx;
     }
 
-    double headingDy() {
+    public double headingDy() {
         return headingDy;
     }
 
-    double speed() {
+    public double speed() {
         return speed;
     }
 
@@ -78,7 +78,7 @@ final class Body {
      * Takes on the pose and speed the world reports (a controller's model of its own car): the
      * heading is taken as it comes, already normalised, so its unit vector is the world's to the bit.
      */
-    void sync(double nx, double ny, double nheading, double nspeed) {
+    public void sync(double nx, double ny, double nheading, double nspeed) {
         if (nx != x || ny != y || nheading != heading) {
             footprint = null;
             x = nx;
@@ -95,11 +95,11 @@ final class Body {
         speed = v;
     }
 
-    void accelerate() {
+    public void accelerate() {
         speed = Math.min(Dynamics.MAX_SPEED, speed + Dynamics.ACCELERATION);
     }
 
-    void brake() {
+    public void brake() {
         speed = Math.max(0, speed - Dynamics.BRAKING);
     }
 
@@ -108,7 +108,7 @@ final class Body {
     }
 
     /** One tick's speed change towards {@code target}: accelerate, brake or hold, never overshooting by more than one step. */
-    void approachSpeed(double target) {
+    public void approachSpeed(double target) {
         speed = speedAfter(target);
     }
 
@@ -140,12 +140,12 @@ final class Body {
     }
 
     /** Turns towards {@code bearing} by at most {@code maxTurn} degrees. */
-    void turnTowards(double bearing, double maxTurn) {
+    public void turnTowards(double bearing, double maxTurn) {
         turnBy(turnTowards(heading, bearing, maxTurn));
     }
 
     /** The turn from {@code heading} towards {@code bearing}, at most {@code maxTurn} degrees either way. */
-    static double turnTowards(double heading, double bearing, double maxTurn) {
+    public static double turnTowards(double heading, double bearing, double maxTurn) {
         double turn = Bearing.turn(heading, bearing);
         return Math.max(-maxTurn, Math.min(maxTurn, turn));
     }
@@ -164,7 +164,7 @@ final class Body {
     }
 
     /** Moves one tick along the heading at the current speed. */
-    void move() {
+    public void move() {
         if (speed != 0) {
             footprint = null;
         }

@@ -24,9 +24,9 @@ import sitcov.world.RoadNetwork;
  * The car follows the path with a Stanley controller on its rear axle: the planned heading at
  * the nearest path point, corrected towards the path by the axle's cross-track error.
  */
-final class CrossingPath {
+public final class CrossingPath {
     /** The path runs on this far beyond the waypoint, along the exit lane, so the car leaves aligned. */
-    static final double TAIL = 4.0;
+    public static final double TAIL = 4.0;
     static final double LEFT_TURN_RADIUS = 1.5;
     static final double RIGHT_TURN_RADIUS = 4.5;
     /** The tightest arc planned for a late turn. */
@@ -78,7 +78,7 @@ final class CrossingPath {
      * the waypoint ({@code wx}, {@code wy}) in the lane leaving {@code exit}, through the junction
      * centred at ({@code jx}, {@code jy}); the rear axle is {@code axle} metres behind the front.
      */
-    static CrossingPath between(double x0, double y0, Compass arrival, double wx, double wy, Compass exit,
+    public static CrossingPath between(double x0, double y0, Compass arrival, double wx, double wy, Compass exit,
                                 double jx, double jy, double axle) {
         Builder path = new Builder(axle);
         path.start(x0 - arrival.dx() * axle, y0 - arrival.dy() * axle, arrival.bearing());
@@ -125,7 +125,7 @@ final class CrossingPath {
      * aligned with its lane — or at the waypoint itself when the next junction's square begins
      * before that, so the car can ask for that junction in time.
      */
-    static double finishBeyond(RoadNetwork network, Junction from, Compass exit, double wx, double wy) {
+    public static double finishBeyond(RoadNetwork network, Junction from, Compass exit, double wx, double wy) {
         Road road = Lanes.roadAlong(network, wx, wy, exit);
         if (road == null) {
             return TAIL / 2;
@@ -146,12 +146,12 @@ final class CrossingPath {
      * {@code heading}, at {@code speed}: the plan is for its rear axle, which moves along its
      * heading, so the axle is steered. The nearest path point only moves on.
      */
-    double bearing(Vehicle car) {
+    public double bearing(Vehicle car) {
         return bearing(car.x(), car.y(), car.headingDx(), car.headingDy(), car.speed());
     }
 
     /** The same for a front at ({@code x}, {@code y}) with the unit heading vector ({@code hx}, {@code hy}). */
-    double bearing(double x, double y, double hx, double hy, double speed) {
+    public double bearing(double x, double y, double hx, double hy, double speed) {
         return axleBearing(x - axle * hx, y - axle * hy, speed);
     }
 
@@ -191,28 +191,28 @@ final class CrossingPath {
     }
 
     /** Whether the car has come to the path's last point. */
-    boolean isFinished() {
+    public boolean isFinished() {
         return progress == xs.length - 1;
     }
 
     /** Whether the car is at a turn on the spot (it must stand still while it turns). */
-    boolean isTurningOnTheSpot() {
+    public boolean isTurningOnTheSpot() {
         return progress + 1 < onTheSpot.length && onTheSpot[progress + 1];
     }
 
     /** While turning on the spot: moves on once the car faces the next planned heading. */
-    void turned(double heading) {
+    public void turned(double heading) {
         while (isTurningOnTheSpot() && Math.abs(Bearing.turn(heading, headings[progress + 1])) < TURNED) {
             progress++;
         }
     }
 
     /** Distance from the car's rear axle to the next turn on the spot ahead, or infinity. */
-    double distanceToTurnOnTheSpot(Vehicle car) {
+    public double distanceToTurnOnTheSpot(Vehicle car) {
         return distanceToTurnOnTheSpot(car.x(), car.y(), car.headingDx(), car.headingDy());
     }
 
-    double distanceToTurnOnTheSpot(double x, double y, double hx, double hy) {
+    public double distanceToTurnOnTheSpot(double x, double y, double hx, double hy) {
         double px = x - axle * hx;
         double py = y - axle * hy;
         for (int i = progress; i + 1 < onTheSpot.length; i++) {

@@ -8,28 +8,28 @@ import sitcov.world.Road;
 import sitcov.world.RoadNetwork;
 
 /** Ground-truth lane geometry: which road a car drives along, where its lane is, what junction is next. */
-final class Lanes {
+public final class Lanes {
     private Lanes() {
     }
 
     /** +1 when "to the driver's right" is the road's increasing across coordinate, else −1. */
-    static int rightSign(Compass direction) {
+    public static int rightSign(Compass direction) {
         Compass right = direction.right();
         return right.dx() + right.dy();
     }
 
     /** The coordinate of ({@code x}, {@code y}) along a road running in {@code direction}: it stays put while the car moves. */
-    static double along(Compass direction, double x, double y) {
+    public static double along(Compass direction, double x, double y) {
         return direction.isNorthSouth() ? y : x;
     }
 
     /** +1 when driving {@code direction} increases the road's along coordinate, else −1. */
-    static int forwardSign(Compass direction) {
+    public static int forwardSign(Compass direction) {
         return direction.dx() + direction.dy();
     }
 
     /** A road holding the point whose axis runs along {@code direction}, or null. */
-    static Road roadAlong(RoadNetwork network, double x, double y, Compass direction) {
+    public static Road roadAlong(RoadNetwork network, double x, double y, Compass direction) {
         boolean northSouth = direction.isNorthSouth();
         List<Road> roads = network.roads();
         for (int index : network.roadsNear(x, y)) {
@@ -50,7 +50,7 @@ final class Lanes {
     }
 
     /** Distance ahead (along {@code direction}) from the point to the near edge of the junction square, which may be negative. */
-    static double distanceToSquare(Junction junction, Compass direction, double x, double y) {
+    public static double distanceToSquare(Junction junction, Compass direction, double x, double y) {
         double along = along(direction, x, y);
         double centre = direction.isNorthSouth() ? junction.centre().y() : junction.centre().x();
         return (centre - along) * forwardSign(direction) - Dimensions.HALF_ROAD;
@@ -60,12 +60,12 @@ final class Lanes {
      * The nearest junction on {@code road} whose square's far edge is still ahead of the point
      * when driving {@code direction}, or null.
      */
-    static Junction nextJunction(RoadNetwork network, Road road, Compass direction, double x, double y) {
+    public static Junction nextJunction(RoadNetwork network, Road road, Compass direction, double x, double y) {
         return nextJunction(network, road, direction, x, y, -1);
     }
 
     /** The same, passing over the junction with id {@code skip}. */
-    static Junction nextJunction(RoadNetwork network, Road road, Compass direction, double x, double y, int skip) {
+    public static Junction nextJunction(RoadNetwork network, Road road, Compass direction, double x, double y, int skip) {
         Junction best = null;
         double bestDistance = Double.MAX_VALUE;
         List<Junction> on = network.junctionsOn(road);

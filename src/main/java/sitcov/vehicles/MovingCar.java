@@ -98,7 +98,7 @@ public final class MovingCar implements Bodied, Steppable {
             bearing = path.bearing(this);
             double beyond = (body.x() - waypointX) * exit.dx() + (body.y() - waypointY) * exit.dy();
             if (beyond > finishBeyond || path.isFinished()
-                    || fartherThan(body.x() - waypointX, body.y() - waypointY, JunctionDriver.STRAYED)) {
+                    || fartherThan(body.x() - waypointX, body.y() - waypointY, JunctionRules.STRAYED)) {
                 crossing = false;
                 lane = exit;
             }
@@ -157,7 +157,7 @@ public final class MovingCar implements Bodied, Steppable {
             held = next.id();
             return Math.min(limit, Dynamics.speedToSlowTo(JUNCTION_SPEED, d));
         }
-        return Dynamics.speedToStopWithin(d - JunctionDriver.WAIT_SHORT_OF_SQUARE);
+        return Dynamics.speedToStopWithin(d - JunctionRules.WAIT_SHORT_OF_SQUARE);
     }
 
     private void startCrossing(Junction junction) {
@@ -169,7 +169,7 @@ public final class MovingCar implements Bodied, Steppable {
         leaving = !junction.hasArm(exit);
         Vec2 point = leaving
                 ? junction.exitPoint(exit, 12)
-                : junction.exitPoint(exit, JunctionDriver.EXIT_BEYOND_SQUARE);
+                : junction.exitPoint(exit, JunctionRules.EXIT_BEYOND_SQUARE);
         waypointX = point.x();
         waypointY = point.y();
         finishBeyond = CrossingPath.finishBeyond(scene.network(), junction, exit, waypointX, waypointY);

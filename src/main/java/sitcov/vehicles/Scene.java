@@ -8,7 +8,6 @@ import sitcov.control.ControllerFactory;
 import sitcov.control.RunStart;
 import sitcov.control.Vehicle;
 import sitcov.engine.SimState;
-import sitcov.faults.FaultSwitchboard;
 import sitcov.geom.Box;
 import sitcov.world.Junction;
 import sitcov.world.Layout;
@@ -51,25 +50,16 @@ public final class Scene {
     }
 
     /**
-     * Builds the scene of {@code map} for one run: the autonomous car at its start (with the given
-     * faults) and a moving car at each moving-car start, all scheduled every tick from tick 0.
-     */
-    public static Scene start(WorldMap map, SimState state, FaultSwitchboard faults) {
-        return start(map, state, faults, BuiltinCar.FACTORY);
-    }
-
-    /**
      * Builds the scene of {@code map} for one run: the car under test at its start, driven by the
      * controller {@code controllers} makes for this run, and a moving car at each moving-car start,
-     * all scheduled every tick from tick 0 (the car under test first). The controller is handed the
-     * run's switchboard {@code faults}.
+     * all scheduled every tick from tick 0 (the car under test first).
      */
-    public static Scene start(WorldMap map, SimState state, FaultSwitchboard faults, ControllerFactory controllers) {
+    public static Scene start(WorldMap map, SimState state, ControllerFactory controllers) {
         Scene scene = new Scene(map, state);
         StartPose start = map.layout().carStart()
                 .orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no start for the car"));
         map.layout().target().orElseThrow(() -> new IllegalArgumentException("map " + map.seed() + " has no Target"));
-        Controller controller = controllers.start(new RunStart(map, state.seed(), state.streams(), state::tick, faults));
+        Controller controller = controllers.start(new RunStart(map, state.seed(), state.streams(), state::tick));
         AutonomousCar car = new AutonomousCar(scene, start, controller);
         scene.autonomousCar = car;
         state.schedule().scheduleRepeating(0, VEHICLE_ORDERING, 1, car);

@@ -9,6 +9,9 @@ import sitcov.control.Vehicle;
 import sitcov.geom.Bearing;
 import sitcov.geom.Box;
 import sitcov.geom.Compass;
+import sitcov.sensors.CameraSettings;
+import sitcov.sensors.Lidar;
+import sitcov.sensors.MarkingCamera;
 import sitcov.world.Junction;
 import sitcov.world.Road;
 import sitcov.world.RoadNetwork;
@@ -39,6 +42,9 @@ final class SceneObservation implements Observation, RightOfWay {
 
     void refresh(long now) {
         tick = now;
+        // what was worked out before this refresh (a viewer looks between ticks) saw other traffic
+        cameraTick = -1;
+        lidarTick = -1;
         double x = car.x();
         double y = car.y();
         double rangeSq = SENSOR_RANGE * SENSOR_RANGE;

@@ -2,6 +2,7 @@ package sitcov.vehicles;
 
 import java.util.List;
 import sitcov.control.ControllerFailure;
+import sitcov.control.Observation;
 import sitcov.control.SelfReport;
 import sitcov.control.Vehicle;
 import sitcov.geom.Box;
@@ -54,6 +55,11 @@ final class SceneTelemetry implements Telemetry {
     @Override
     public boolean clamped() {
         return scene.autonomousCar().wasClamped();
+    }
+
+    @Override
+    public Observation observation() {
+        return scene.autonomousCar().observation();
     }
 
     @Override

@@ -2,6 +2,7 @@ package sitcov.vehicles;
 
 import java.util.List;
 import sitcov.control.ControllerFailure;
+import sitcov.control.Observation;
 import sitcov.control.SelfReport;
 import sitcov.control.Vehicle;
 import sitcov.geom.Box;
@@ -36,6 +37,12 @@ public interface Telemetry {
 
     /** Whether this tick's command asked for more than the car's limits. */
     boolean clamped();
+
+    /**
+     * What the world offers the car's controller this tick, whatever controller it is: among the rest,
+     * the standard camera's and LIDAR's hits, which a viewer draws (worked out when first asked for).
+     */
+    Observation observation();
 
     /** What the controller said of itself this tick: kept for people, never judged by. */
     SelfReport selfReport();

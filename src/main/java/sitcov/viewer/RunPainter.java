@@ -13,23 +13,21 @@ import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.Locale;
+import sitcov.control.Observation;
+import sitcov.control.SelfReport;
+import sitcov.control.Vehicle;
 import sitcov.geom.Bearing;
+import sitcov.geom.Compass;
 import sitcov.judge.LiveRun;
 import sitcov.judge.RunHistory;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.NearMiss;
 import sitcov.oracle.NearMisses;
-import sitcov.render.NearMissText;
 import sitcov.render.MapRenderer;
 import sitcov.render.MapShapes;
+import sitcov.render.NearMissText;
 import sitcov.render.OutcomeText;
-import sitcov.control.Controller;
-import sitcov.control.SelfReport;
-import sitcov.geom.Compass;
-import sitcov.vehicles.BuiltinCar;
-import sitcov.vehicles.OvertakingStage;
-import sitcov.control.Vehicle;
 
 /**
  * Paints one live run as it stands: the map (drawn once), the car's sensors (the camera's 90° fan to
@@ -99,7 +97,7 @@ public final class RunPainter {
         g.translate(0, HEADER);
         g.scale(scale, scale);
         Vehicle car = run().telemetry().car();
-        sensors(g, car, run().scene().autonomousCar().controller());
+        sensors(g, car, run().telemetry().observation());
         for (Vehicle v : run().telemetry().movingCars()) {
             if (v.isActive()) {
                 body(g, v, MOVING);
@@ -173,7 +171,8 @@ public final class RunPainter {
         }
         Vehicle car = run().telemetry().car();
         SelfReport said = run().telemetry().selfReport();
-        String stage = said.stage() == null ? OvertakingStage.NOT_OVERTAKING.name() : said.stage();
+        // a controller that names no stage of its own is described by whether it says it overtakes
+        String stage = said.stage() != null ? said.stage() : said.overtaking() ? "overtaking" : "not overtaking";
         return String.format(Locale.ROOT, "%s · %.1f km/h · lane %s · %s%s%s · steered by %s · speed set by %s",
                 run().tick() < 0 ? "not started (press Play or Step)" : "tick " + run().tick(), car.speed() * 18,
                 said.lane() == null ? Compass.nearest(car.heading()) : said.lane(),
@@ -184,26 +183,25 @@ public final class RunPainter {
     }
 
     /**
-     * The camera's reach (shaded fan) and the samples where its rays met a marking this tick (yellow
-     * dots); the LIDAR's reach (outlined half disc) and the rays of its last sweep that hit something.
+     * The standard camera's reach (shaded fan) and the samples where its rays meet a marking (yellow
+     * dots); the standard LIDAR's reach (outlined half disc) and the rays of its sweep that hit
+     * something: the sensors the world offers every controller, as they see from where the car stands.
+     * A controller that works from its own processing of them (the builtin car's degraded camera
+     * under a camera fault) may have seen otherwise.
      */
-    /** The builtin car's sensors as it used them (another controller's are its own affair). */
-    private void sensors(Graphics2D g, Vehicle body, Controller controller) {
-        if (!(controller instanceof BuiltinCar car)) {
-            return;
-        }
+    private void sensors(Graphics2D g, Vehicle body, Observation sees) {
         g.setColor(CAMERA);
         g.fill(fan(body.x(), body.y(), body.heading(), 45, CAMERA_RANGE));
         g.setColor(LIDAR);
         g.setStroke(new BasicStroke(1.5f / scale));
         g.draw(fan(body.x(), body.y(), body.heading(), 90, LIDAR_RANGE));
         g.setStroke(new BasicStroke(0.8f / scale));
-        for (int h = 0; h < car.lidarHits(); h++) {
-            g.draw(new java.awt.geom.Line2D.Double(car.lidarOriginX(), car.lidarOriginY(), car.lidarHitX(h), car.lidarHitY(h)));
+        for (int h = 0; h < sees.lidarHits(); h++) {
+            g.draw(new java.awt.geom.Line2D.Double(body.x(), body.y(), sees.lidarHitX(h), sees.lidarHitY(h)));
         }
         double r = 1.5 / scale;
-        for (int h = 0; h < car.cameraHits(); h++) {
-            Ellipse2D dot = new Ellipse2D.Double(car.cameraHitX(h) - r, car.cameraHitY(h) - r, 2 * r, 2 * r);
+        for (int h = 0; h < sees.cameraHits(); h++) {
+            Ellipse2D dot = new Ellipse2D.Double(sees.cameraHitX(h) - r, sees.cameraHitY(h) - r, 2 * r, 2 * r);
             g.setColor(CAMERA_HIT);
             g.fill(dot);
             g.setColor(Color.BLACK);

@@ -15,6 +15,7 @@ import java.util.Map;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.builtin.BuiltinCar;
 import sitcov.drivers.Drivers;
 import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.ExperimentConfig;
@@ -153,7 +154,7 @@ class CampaignRunTest {
     private static void killed(CampaignConfig campaign, Path folder, sitcov.judge.Variant fault, int maps) throws Exception {
         ExperimentConfig config = campaign.trialsOf(fault);
         ResultsRecorder recorder = ResultsRecorder.create(folder.resolve(CampaignConfig.folderOf(fault)),
-                new Manifest(config, Version.current(), Shard.WHOLE, false, false), Map.of(), System::nanoTime);
+                new Manifest(config, Version.current(), Shard.WHOLE, false, false), Map.of(), System::nanoTime, BuiltinCar.FACTORY);
         ExperimentRunner[] runner = new ExperimentRunner[1];
         int[] judged = {0};
         runner[0] = new ExperimentRunner(config, Drivers.standard(), Shard.WHOLE, recorder.journal(), 2, System::nanoTime,
@@ -161,7 +162,7 @@ class CampaignRunTest {
                     if (ev instanceof ExperimentEvent.MapJudged && ++judged[0] == maps) {
                         runner[0].halt();
                     }
-                }));
+                }), BuiltinCar.SOURCE);
         assertFalse(runner[0].run(), "the run was meant to stop after " + maps + " maps");
         recorder.close();
     }

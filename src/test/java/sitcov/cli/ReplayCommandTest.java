@@ -13,6 +13,7 @@ import java.util.function.UnaryOperator;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.judge.Simulator;
 import sitcov.oracle.Outcome;
 import sitcov.oracle.RunResult;
@@ -111,7 +112,7 @@ class ReplayCommandTest {
         assertEquals(0, r.exitCode(), r.err());
         assertTrue(Files.size(png) > 0);
         // seed 1 reaches its Target without faults; fault 17 leaves the car standing until its time is up
-        RunResult twin = Simulator.run(MapGenerator.generate(1), 1);
+        RunResult twin = BuiltinRuns.run(MapGenerator.generate(1), 1);
         assertEquals(Outcome.TARGET_REACHED, twin.outcome());
         assertTrue(line(r.out(), "Without the fault").endsWith("Reached the Target at t=" + (twin.ticks() - 1)), r.out());
         assertTrue(line(r.out(), "With fault 17").contains("TIMEOUT at t=4999"), r.out());

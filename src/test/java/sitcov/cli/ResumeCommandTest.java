@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.builtin.BuiltinCar;
 import sitcov.drivers.Drivers;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentEvent;
@@ -30,7 +31,7 @@ class ResumeCommandTest {
     private static ExperimentConfig interrupt(String preset, Path folder, int maps) throws Exception {
         ExperimentConfig config = Preset.read(Path.of(preset), null, Drivers.standard()).config();
         ResultsRecorder recorder = ResultsRecorder.create(folder, new Manifest(config, Version.current(), Shard.WHOLE,
-                false, false), Map.of(), System::nanoTime);
+                false, false), Map.of(), System::nanoTime, BuiltinCar.FACTORY);
         ExperimentRunner[] runner = new ExperimentRunner[1];
         int[] judged = {0};
         runner[0] = new ExperimentRunner(config, Drivers.standard(), Shard.WHOLE, recorder.journal(), 2, System::nanoTime,
@@ -38,7 +39,7 @@ class ResumeCommandTest {
                     if (e instanceof ExperimentEvent.MapJudged && ++judged[0] == maps) {
                         runner[0].halt();
                     }
-                }));
+                }), BuiltinCar.SOURCE);
         assertFalse(runner[0].run(), "the run was meant to stop after " + maps + " maps");
         recorder.close();
         return config;

@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.judge.Simulator;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.NearMiss;
@@ -197,7 +198,7 @@ class SimulateCommandTest {
         assertEquals(0, r.exitCode(), r.err());
         List<String> expected = new java.util.ArrayList<>();
         for (long seed = 280; seed < 430; seed++) {
-            sitcov.oracle.RunResult run = sitcov.judge.Simulator.run(sitcov.world.MapGenerator.generate(seed), seed);
+            sitcov.oracle.RunResult run = BuiltinRuns.run(sitcov.world.MapGenerator.generate(seed), seed);
             if (run.hasAccident() || run.outcome() == sitcov.oracle.Outcome.TIMEOUT) {
                 expected.add(Long.toString(seed));
             }

@@ -1,5 +1,6 @@
 package sitcov.experiment;
 
+import sitcov.builtin.BuiltinCar;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -28,7 +29,7 @@ class JournalReplayTest {
 
     private static List<ExperimentEvent> run(Journal journal) {
         List<ExperimentEvent> events = new ArrayList<>();
-        new ExperimentRunner(CONFIG, EVERY_RUNNABLE, Shard.WHOLE, journal, 1, System::nanoTime, List.of(events::add))
+        new ExperimentRunner(CONFIG, EVERY_RUNNABLE, Shard.WHOLE, journal, 1, System::nanoTime, List.of(events::add), BuiltinCar.SOURCE)
                 .run();
         return events;
     }

@@ -1,5 +1,6 @@
 package sitcov.experiment;
 
+import sitcov.builtin.BuiltinCar;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -48,7 +49,7 @@ public final class ResultsCollector implements ExperimentListener {
     /** Runs {@code config} whole on {@code threads} threads and returns its results. */
     public static List<ReplicationResult> run(ExperimentConfig config, DriverFactory drivers, int threads) {
         ResultsCollector collector = new ResultsCollector();
-        new ExperimentRunner(config, drivers, Shard.WHOLE, Journal.empty(), threads, System::nanoTime, List.of(collector))
+        new ExperimentRunner(config, drivers, Shard.WHOLE, Journal.empty(), threads, System::nanoTime, List.of(collector), BuiltinCar.SOURCE)
                 .run();
         return collector.results();
     }

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinCar;
 import sitcov.faults.Fault;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.RunResult;
@@ -47,7 +48,7 @@ class AsamSchemaTest {
     void aRecordedRunThatLeavesTheRoadAndTimesOutIsValidOpenScenario() {
         // fault 2 shifts the waypoints: map 5 leaves the road and crosses the centre line, then times out
         WorldMap map = MapGenerator.generate(5);
-        RunRecording run = RunRecording.of(map, 5, Set.of(Fault.WAYPOINTS_NORTH_EAST));
+        RunRecording run = RunRecording.of(map, 5, Set.of(Fault.WAYPOINTS_NORTH_EAST), BuiltinCar.FACTORY);
         RunResult result = run.result();
         assertTrue(result.count(AccidentType.LEAVEROAD) > 0 && result.count(AccidentType.TIMEOUT) > 0,
                 "map 5 with fault 2 no longer leaves the road and times out (" + result.countsByType() + "): pick another run");
@@ -61,7 +62,7 @@ class AsamSchemaTest {
     @Test
     void aRecordedRunWithClashesIsValidInEveryOpenScenarioVersion() {
         WorldMap map = MapGenerator.generate(33);
-        RunRecording run = RunRecording.of(map, 33, Set.of(Fault.TARGET_LANE_CHECK_SKIPPED));
+        RunRecording run = RunRecording.of(map, 33, Set.of(Fault.TARGET_LANE_CHECK_SKIPPED), BuiltinCar.FACTORY);
         assertTrue(run.result().count(AccidentType.CLASHWITHOBSTACLE) > 0 && run.result().count(AccidentType.CLASHWITHOTHERCAR) > 0,
                 "map 33 with fault 14 no longer clashes with a parked and a moving car: pick another run");
         for (ScenarioVersion v : ScenarioVersion.values()) {

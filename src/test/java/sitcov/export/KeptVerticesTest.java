@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinCar;
 import sitcov.world.MapGenerator;
 
 class KeptVerticesTest {
@@ -42,7 +43,7 @@ class KeptVerticesTest {
 
     @Test
     void everyRecordedPoseOfARealRunIsWithinAMillimetreOfTheInterpolationBetweenKeptVertices() {
-        RunRecording run = RunRecording.of(MapGenerator.generate(21), 21, Set.of());
+        RunRecording run = RunRecording.of(MapGenerator.generate(21), 21, Set.of(), BuiltinCar.FACTORY);
         int dropped = 0;
         for (RunRecording.Track track : run.tracks()) {
             List<RunRecording.Sample> samples = track.samples();

@@ -11,6 +11,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinCar;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.control.Vehicle;
 import sitcov.export.ScenarioModel.Pose;
 import sitcov.faults.Fault;
@@ -64,7 +66,7 @@ class OpenScenarioRoundTripTest {
         assertTrue(run.count(AccidentType.CLASHWITHOBSTACLE) > 0 && run.count(AccidentType.CLASHWITHOTHERCAR) > 0,
                 "map " + CLASH_SEED + " with fault " + CLASH_FAULT.id() + " no longer clashes with a parked and a moving car"
                         + " (" + run.countsByType() + "): pick another run with both");
-        RunRecording recording = RunRecording.of(map, CLASH_SEED, Set.of(CLASH_FAULT));
+        RunRecording recording = RunRecording.of(map, CLASH_SEED, Set.of(CLASH_FAULT), BuiltinCar.FACTORY);
         assertEquals(run, recording.result(), "the recording is of the same run");
         Failures failures = new Failures();
         for (ScenarioVersion v : ScenarioVersion.values()) {
@@ -85,7 +87,7 @@ class OpenScenarioRoundTripTest {
             WorldMap map = MapGenerator.generate(seed);
             Watched watched = watch(map, seed, Set.of());
             leaving += (int) watched.samples().values().stream().filter(s -> s.stream().anyMatch(p -> p[3] == 0)).count();
-            RunRecording recording = RunRecording.of(map, seed, Set.of());
+            RunRecording recording = RunRecording.of(map, seed, Set.of(), BuiltinCar.FACTORY);
             ScenarioModel m = ScenarioModel.parse(OpenScenario.recording(recording, "map-" + seed + ".xodr", ScenarioVersion.V1_3));
             List<String> problems = new ArrayList<>(trajectoryProblems(watched, m));
             problems.addAll(accidentProblems(watched, m));
@@ -210,7 +212,7 @@ class OpenScenarioRoundTripTest {
             samples.put("moving" + i, new ArrayList<>(List.of(sample(map.movingCars().get(i), Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH))));
         }
         Map<Integer, String> movingById = new LinkedHashMap<>();
-        RunResult result = Simulator.run(map, internalSeed, faults, (tick, run, detector) -> {
+        RunResult result = BuiltinRuns.run(map, internalSeed, faults, (tick, run, detector) -> {
             samples.get("ego").add(sample(run.car()));
             List<? extends Vehicle> moving = run.movingCars();
             for (int i = 0; i < moving.size(); i++) {

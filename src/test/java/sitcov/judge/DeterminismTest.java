@@ -12,8 +12,9 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
-import sitcov.oracle.RunResult;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.control.Vehicle;
+import sitcov.oracle.RunResult;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
 
@@ -34,7 +35,7 @@ class DeterminismTest {
 
     static Traced run(WorldMap map, long internalSeed) {
         List<Pose> trace = new ArrayList<>();
-        RunResult result = Simulator.run(map, internalSeed, Set.of(), (tick, scene, detector) -> {
+        RunResult result = BuiltinRuns.run(map, internalSeed, Set.of(), (tick, scene, detector) -> {
             for (Vehicle v : java.util.stream.Stream.concat(java.util.stream.Stream.of(scene.car()),
                     scene.movingCars().stream()).toList()) {
                 if (v.isActive()) {

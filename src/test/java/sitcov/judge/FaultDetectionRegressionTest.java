@@ -12,6 +12,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestFactory;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
 import sitcov.world.SituationFile;
@@ -56,7 +57,7 @@ class FaultDetectionRegressionTest {
         return cases().stream().map(c -> DynamicTest.dynamicTest(
                 "fault " + c.fault().id() + " (" + c.fault().label() + ") is FOUND on " + c.file(), () -> {
                     WorldMap map = SituationFile.read(FOLDER.resolve(c.file()));
-                    JudgedMap judged = MapRunner.judge(map, c.internalSeed(), List.of(c.fault()));
+                    JudgedMap judged = BuiltinRuns.judge(map, c.internalSeed(), List.of(c.fault()));
                     RunResult faultFree = judged.faultFree();
                     FaultVerdict verdict = judged.verdicts().get(0);
                     assertFalse(faultFree.hasAccident(), "the fault-free run has accidents " + faultFree.accidents()

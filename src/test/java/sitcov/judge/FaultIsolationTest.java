@@ -8,6 +8,7 @@ import java.util.EnumSet;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.faults.Activation;
 import sitcov.faults.Fault;
 import sitcov.vehicles.AutonomousCar;
@@ -24,7 +25,7 @@ class FaultIsolationTest {
 
     private static List<String> trajectory(WorldMap map, long internalSeed, Set<Fault> faults, List<Activation> out) {
         List<String> states = new ArrayList<>();
-        RunRecord record = Simulator.run(map, internalSeed, faults, (tick, scene, detector) -> {
+        RunRecord record = BuiltinRuns.run(map, internalSeed, faults, (tick, scene, detector) -> {
             var car = scene.car();
             states.add(tick + ":" + car.x() + "," + car.y() + "," + car.heading() + "," + car.speed()
                     + "," + detector.accidents().size());

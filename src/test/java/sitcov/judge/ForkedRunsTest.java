@@ -5,8 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinCar;
 import sitcov.faults.Fault;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.world.MapGenerator;
 import sitcov.world.SituationFile;
 import sitcov.world.WorldMap;

@@ -13,11 +13,12 @@ import java.util.Set;
 import java.util.TreeSet;
 import java.util.function.Supplier;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinCar;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.control.SelfReport;
 import sitcov.control.Vehicle;
 import sitcov.faults.Fault;
 import sitcov.faults.Shadow;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
 
@@ -47,8 +48,8 @@ class LiveRunTest {
         for (long seed = 1; seed <= 6; seed++) {
             WorldMap map = MapGenerator.generate(seed);
             Set<Fault> faults = seed % 2 == 0 ? Set.of() : Set.of(Fault.ofId((int) seed % 20));
-            RunRecord fresh = toEnd(new LiveRun(map, seed * 7, faults));
-            LiveRun run = new LiveRun(map, seed * 7, faults);
+            RunRecord fresh = toEnd(BuiltinRuns.live(map, seed * 7, faults));
+            LiveRun run = BuiltinRuns.live(map, seed * 7, faults);
             for (long t = 0; t < fresh.result().ticks() / 2; t++) {
                 run.step();
             }
@@ -86,15 +87,15 @@ class LiveRunTest {
     /** The runs a checkpoint is taken of: fault-free, with each of {@code each} on, watching every fault, and forks of each kind. */
     private static Map<String, Supplier<LiveRun>> kinds(WorldMap map, long seed, List<Fault> each) {
         Map<String, Supplier<LiveRun>> kinds = new LinkedHashMap<>();
-        kinds.put("fault-free", () -> new LiveRun(map, seed, Set.of()));
+        kinds.put("fault-free", () -> BuiltinRuns.live(map, seed, Set.of()));
         for (Fault f : each) {
-            kinds.put("fault " + f.id(), () -> new LiveRun(map, seed, Set.of(f)));
+            kinds.put("fault " + f.id(), () -> BuiltinRuns.live(map, seed, Set.of(f)));
         }
         kinds.put("watching every fault", () -> LiveRun.watching(map, seed, EnumSet.allOf(Fault.class), BuiltinCar.FACTORY));
         // forks as ForkedRuns makes them, at a tick the car is still driving up to its first manoeuvre
-        kinds.put("forked with fault 17, judged", () -> after(40, new LiveRun(map, seed, Set.of()))
+        kinds.put("forked with fault 17, judged", () -> after(40, BuiltinRuns.live(map, seed, Set.of()))
                 .forkWith(Fault.ofId(17), false).judged());
-        kinds.put("forked with faults 7 and 14, a version", () -> after(40, new LiveRun(map, seed, Set.of()))
+        kinds.put("forked with faults 7 and 14, a version", () -> after(40, BuiltinRuns.live(map, seed, Set.of()))
                 .forkWith(List.of(new Shadow(Fault.ofId(7), 3, 41), new Shadow(Fault.ofId(14), -1, 41))));
         return kinds;
     }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.oracle.Accident;
 import sitcov.oracle.Outcome;
 import sitcov.oracle.RunResult;
@@ -19,8 +20,8 @@ class MapRunnerTest {
         for (FaultDetectionRegressionTest.Case c : FaultDetectionRegressionTest.cases()) {
             WorldMap map = SituationFile.read(FaultDetectionRegressionTest.FOLDER.resolve(c.file()));
             List<sitcov.faults.Fault> faults = List.of(c.fault());
-            FaultVerdict toEnd = MapRunner.judge(map, c.internalSeed(), faults, FaultyRuns.TO_END).verdicts().get(0);
-            FaultVerdict untilVerdict = MapRunner.judge(map, c.internalSeed(), faults, FaultyRuns.UNTIL_VERDICT)
+            FaultVerdict toEnd = BuiltinRuns.judge(map, c.internalSeed(), faults, FaultyRuns.TO_END).verdicts().get(0);
+            FaultVerdict untilVerdict = BuiltinRuns.judge(map, c.internalSeed(), faults, FaultyRuns.UNTIL_VERDICT)
                     .verdicts().get(0);
             String seeds = c.replay();
             assertEquals(toEnd.detection(), untilVerdict.detection(), seeds);

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.faults.Fault;
 import sitcov.world.MapGenerator;
 
@@ -16,7 +17,7 @@ class PaperNotionTest {
     void anAccidentInARunWhoseFaultNeverRanDoesNotCount() {
         // map 147's fault-free run clashes with a parked car; fault 5 never runs there (the car never
         // crawls from below the crawl band), so its faulty run is the fault-free run, accident and all
-        FaultVerdict v = MapRunner.judge(MapGenerator.generate(147), 147, List.of(Fault.CRAWL_DOUBLE_ACCELERATION))
+        FaultVerdict v = BuiltinRuns.judge(MapGenerator.generate(147), 147, List.of(Fault.CRAWL_DOUBLE_ACCELERATION))
                 .verdicts().get(0);
         assertFalse(v.reached(), v.toString());
         assertTrue(v.faultyRun().hasAccident(), v.toString());
@@ -26,7 +27,7 @@ class PaperNotionTest {
 
     @Test
     void anAccidentInARunWhoseFaultRanCounts() {
-        FaultVerdict v = MapRunner.judge(MapGenerator.generate(1), 1, List.of(Fault.WAYPOINTS_NORTH_EAST)).verdicts().get(0);
+        FaultVerdict v = BuiltinRuns.judge(MapGenerator.generate(1), 1, List.of(Fault.WAYPOINTS_NORTH_EAST)).verdicts().get(0);
         assertTrue(v.reached(), v.toString());
         assertTrue(v.faultyRun().hasAccident(), v.toString());
         assertTrue(v.foundByPaperNotion(), v.toString());

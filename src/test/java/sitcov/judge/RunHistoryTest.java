@@ -6,8 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinCar;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.faults.Fault;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
 
@@ -15,7 +16,7 @@ class RunHistoryTest {
     private static final WorldMap MAP = MapGenerator.generate(3);
 
     private static LiveRun steppedTo(long tick) {
-        LiveRun run = new LiveRun(MAP, 5, Set.of(Fault.ONCOMING_AT_HALF_SPEED));
+        LiveRun run = BuiltinRuns.live(MAP, 5, Set.of(Fault.ONCOMING_AT_HALF_SPEED));
         while (run.tick() < tick) {
             run.step();
         }
@@ -29,7 +30,7 @@ class RunHistoryTest {
 
     @Test
     void steppingBackAcrossACheckpointGivesTheRunAsItWasThen() {
-        RunHistory history = new RunHistory(new LiveRun(MAP, 5, Set.of(Fault.ONCOMING_AT_HALF_SPEED)));
+        RunHistory history = new RunHistory(BuiltinRuns.live(MAP, 5, Set.of(Fault.ONCOMING_AT_HALF_SPEED)));
         long forward = RunHistory.INTERVAL + 3;
         for (long t = 0; t <= forward; t++) {
             assertTrue(history.step());
@@ -49,7 +50,7 @@ class RunHistoryTest {
 
     @Test
     void aRunBeforeItsFirstTickHasNothingToStepBackTo() {
-        RunHistory history = new RunHistory(new LiveRun(MAP, 5, Set.of()));
+        RunHistory history = new RunHistory(BuiltinRuns.live(MAP, 5, Set.of()));
         assertFalse(history.stepBack());
         history.step();
         assertTrue(history.stepBack());

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.experiment.MapId;
 import sitcov.experiment.SeedPlan;
 import sitcov.oracle.AccidentType;
@@ -22,7 +23,7 @@ class RunMarginsTest {
         int failing = 0;
         for (long seed : SEEDS) {
             WorldMap map = MapGenerator.generate(seed);
-            RunResult r = Simulator.run(map, SeedPlan.internalSeed(2026, new MapId.Seeded(map.seed())));
+            RunResult r = BuiltinRuns.run(map, SeedPlan.internalSeed(2026, new MapId.Seeded(map.seed())));
             failing += r.hasAccident() ? 1 : 0;
             for (AccidentType t : List.of(AccidentType.CLASHWITHOBSTACLE, AccidentType.CLASHWITHOTHERCAR,
                     AccidentType.LEAVEROAD, AccidentType.CROSSCENTRELINE)) {

@@ -11,6 +11,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinRuns;
+import sitcov.control.Vehicle;
 import sitcov.engine.SimState;
 import sitcov.faults.FaultSwitchboard;
 import sitcov.geom.Box;
@@ -20,7 +22,6 @@ import sitcov.judge.Simulator;
 import sitcov.vehicles.AutonomousCar;
 import sitcov.vehicles.Dynamics;
 import sitcov.vehicles.Scene;
-import sitcov.control.Vehicle;
 import sitcov.world.Axis;
 import sitcov.world.Junction;
 import sitcov.world.Layout;
@@ -47,7 +48,7 @@ class AccidentDetectorTest {
 
     @Test
     void aRunOnTheEmptyStraightRoadReachesTheTargetWithoutAccident() {
-        RunResult result = Simulator.run(Situations.withoutTraffic(Situations.straight(List.of())), 1);
+        RunResult result = BuiltinRuns.run(Situations.withoutTraffic(Situations.straight(List.of())), 1);
 
         assertEquals(Outcome.TARGET_REACHED, result.outcome());
         assertEquals(List.of(), result.accidents());
@@ -59,7 +60,7 @@ class AccidentDetectorTest {
     void overtakingAParkedCarIsNotAnAccident() {
         // a parked car in the lane (x ∈ [87.5, 92.5]) between the start and the Target: passing it
         // over the centre line is justified, and the car must touch neither it nor the kerb
-        RunResult result = Simulator.run(
+        RunResult result = BuiltinRuns.run(
                 Situations.withoutTraffic(Situations.straight(List.of(Situations.parkedInEastboundLane(0, 90)))), 1);
 
         assertEquals(Outcome.TARGET_REACHED, result.outcome());
@@ -73,7 +74,7 @@ class AccidentDetectorTest {
         Layout layout = straightFrom(new StartPose(new Vec2(40, 48.5), Compass.EAST), List.of(),
                 new Target(new Vec2(100, 51.5), 0));
 
-        RunResult result = Simulator.run(Situations.withoutTraffic(layout), 1);
+        RunResult result = BuiltinRuns.run(Situations.withoutTraffic(layout), 1);
 
         assertEquals(Outcome.TARGET_REACHED, result.outcome());
         assertEquals(List.of(), result.accidents());
@@ -84,7 +85,7 @@ class AccidentDetectorTest {
         WorldMap map = Situations.withTraffic(Situations.straight(List.of()),
                 List.of(new StartPose(new Vec2(170, 51.5), Compass.WEST)));
 
-        RunResult result = Simulator.run(map, 1);
+        RunResult result = BuiltinRuns.run(map, 1);
 
         assertEquals(Outcome.TARGET_REACHED, result.outcome());
         assertEquals(List.of(), result.accidents());
@@ -170,7 +171,7 @@ class AccidentDetectorTest {
         List<Long> entered = new ArrayList<>();
         boolean[] wasOff = {false};
 
-        RunResult result = Simulator.run(Situations.withoutTraffic(layout), 1, Set.of(),
+        RunResult result = BuiltinRuns.run(Situations.withoutTraffic(layout), 1, Set.of(),
                 (tick, scene, detector) -> {
                     boolean off = !scene.network().isOnRoad(scene.car().footprint());
                     if (off && !wasOff[0]) {
@@ -196,7 +197,7 @@ class AccidentDetectorTest {
                         new Junction(2, new Vec2(23, 70), 0, 23, 0, 0), new Junction(3, new Vec2(177, 70), 0, 0, 0, 23)),
                 List.of(), new Target(new Vec2(100, 68.5), 1), new StartPose(new Vec2(40, 28.5), Compass.EAST));
 
-        RunResult result = Simulator.run(Situations.withoutTraffic(layout), 1);
+        RunResult result = BuiltinRuns.run(Situations.withoutTraffic(layout), 1);
 
         assertEquals(Outcome.TIMEOUT, result.outcome());
         assertEquals(Dynamics.TIMEOUT_TICKS, result.ticks());
@@ -367,13 +368,13 @@ class AccidentDetectorTest {
 
     /** The straight road with the car at its usual start, before any tick. */
     private static Scene straightScene() {
-        return Scene.start(Situations.withoutTraffic(Situations.straight(List.of())), new SimState(1), FaultSwitchboard.none());
+        return BuiltinRuns.scene(Situations.withoutTraffic(Situations.straight(List.of())), new SimState(1), FaultSwitchboard.none());
     }
 
     /** The straight road after 10 ticks: the car is under way in its lane, going east. */
     private static Scene movingScene() {
         SimState state = new SimState(1);
-        Scene scene = Scene.start(Situations.withoutTraffic(Situations.straight(List.of())), state, FaultSwitchboard.none());
+        Scene scene = BuiltinRuns.scene(Situations.withoutTraffic(Situations.straight(List.of())), state, FaultSwitchboard.none());
         for (int t = 0; t < 10; t++) {
             state.step();
         }
@@ -395,7 +396,7 @@ class AccidentDetectorTest {
     /** The accidents of the first {@code ticks} ticks of a run of {@code layout}, without traffic. */
     private static List<Accident> firstTicks(Layout layout, int ticks) {
         SimState state = new SimState(1);
-        Scene scene = Scene.start(Situations.withoutTraffic(layout), state, FaultSwitchboard.none());
+        Scene scene = BuiltinRuns.scene(Situations.withoutTraffic(layout), state, FaultSwitchboard.none());
         AccidentDetector detector = new AccidentDetector(scene.telemetry());
         state.schedule().scheduleRepeating(0, AccidentDetector.ORDERING, 1, detector);
         for (int t = 0; t < ticks; t++) {

@@ -8,6 +8,7 @@ import java.util.EnumSet;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.control.Vehicle;
 import sitcov.faults.Fault;
 import sitcov.geom.Box;
@@ -41,7 +42,7 @@ class NearMissesTest {
     private static Watched watch(WorldMap map, long seed, Set<Fault> faults) {
         NearMisses[] watcher = new NearMisses[1];
         Reference reference = new Reference();
-        RunRecord record = Simulator.run(map, seed, faults, (tick, run, detector) -> {
+        RunRecord record = BuiltinRuns.run(map, seed, faults, (tick, run, detector) -> {
             if (watcher[0] == null) {
                 watcher[0] = new NearMisses(run);
             }

@@ -7,12 +7,13 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinCar;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.faults.Activation;
 import sitcov.faults.Fault;
 import sitcov.judge.RunObserver;
 import sitcov.judge.RunRecord;
 import sitcov.judge.Simulator;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
 
@@ -47,7 +48,7 @@ class BuiltinOverTheProtocolTest {
         try (ProxyFactory pipe = Pipes.serving(BuiltinCar.FACTORY, Set.of())) {
             for (long map = 1; map <= 3; map++) {
                 WorldMap world = MapGenerator.generate(map);
-                assertEquals(Simulator.run(world, seed, Set.of(), RunObserver.NONE),
+                assertEquals(BuiltinRuns.run(world, seed, Set.of(), RunObserver.NONE),
                         Simulator.run(world, seed, Set.of(), RunObserver.NONE, pipe), "map " + map);
             }
         }
@@ -59,7 +60,7 @@ class BuiltinOverTheProtocolTest {
         try (ProxyFactory served = Pipes.serving(BuiltinCar.FACTORY, Set.of(Fault.ofId(8)))) {
             WorldMap map = MapGenerator.generate(1);
             RunRecord viaPipe = Simulator.run(map, 1, Set.of(), RunObserver.NONE, served);
-            RunRecord inProcess = Simulator.run(map, 1, Set.of(Fault.ofId(8)), RunObserver.NONE);
+            RunRecord inProcess = BuiltinRuns.run(map, 1, Set.of(Fault.ofId(8)), RunObserver.NONE);
             assertEquals(inProcess.result(), viaPipe.result());
             Activation camera = viaPipe.activations().get(8);
             assertTrue(camera.reached() && !camera.active(), "the served car's fault is reached, not switched on by the run");
@@ -73,7 +74,7 @@ class BuiltinOverTheProtocolTest {
         try (ProxyFactory pipe = Pipes.serving(BuiltinCar.FACTORY, Set.of())) {
             for (long seed : seeds) {
                 WorldMap map = MapGenerator.generate(seed);
-                RunRecord inProcess = Simulator.run(map, seed, faults, RunObserver.NONE);
+                RunRecord inProcess = BuiltinRuns.run(map, seed, faults, RunObserver.NONE);
                 RunRecord viaPipe = Simulator.run(map, seed, faults, RunObserver.NONE, pipe);
                 assertEquals(inProcess, viaPipe, "seed " + seed + " with faults " + faults);
                 if (inProcess.activations().stream().anyMatch(Activation::effective)) {

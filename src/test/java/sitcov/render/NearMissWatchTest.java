@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.judge.Simulator;
 import sitcov.oracle.Margins;
 import sitcov.oracle.RunResult;
@@ -20,7 +21,7 @@ class NearMissWatchTest {
         NearMissWatch watch = new NearMissWatch();
         assertFalse(watch.started());
         assertThrows(IllegalStateException.class, watch::nearMisses);
-        RunResult result = Simulator.run(map, 1, Set.of(), watch).result();
+        RunResult result = BuiltinRuns.run(map, 1, Set.of(), watch).result();
         assertTrue(watch.started());
         assertTrue(result.margins().known());
         assertEquals(result.margins(), Margins.of(watch.nearMisses()));

@@ -14,6 +14,7 @@ import java.util.Optional;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.faults.Fault;
 import sitcov.geom.Box;
 import sitcov.judge.Simulator;
@@ -82,14 +83,14 @@ class ReplayAnimationTest {
         WorldMap map = MapGenerator.generate(2);
         TrajectoryRecorder freePath = new TrajectoryRecorder();
         FrameRecorder freeFrames = new FrameRecorder(5);
-        RunResult free = Simulator.run(map, 2, Set.of(), (t, s, d) -> {
+        RunResult free = BuiltinRuns.run(map, 2, Set.of(), (t, s, d) -> {
             freePath.afterTick(t, s, d);
             freeFrames.afterTick(t, s, d);
         }).result();
         TrajectoryRecorder faultyPath = new TrajectoryRecorder();
         FrameRecorder faultyFrames = new FrameRecorder(5);
         Fault fault = Fault.ofId(4);
-        var faulty = Simulator.run(map, 2, Set.of(fault), (t, s, d) -> {
+        var faulty = BuiltinRuns.run(map, 2, Set.of(fault), (t, s, d) -> {
             faultyPath.afterTick(t, s, d);
             faultyFrames.afterTick(t, s, d);
         });

@@ -8,6 +8,7 @@ import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.judge.Simulator;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.NearMiss;
@@ -24,7 +25,7 @@ class RunRendererNearMissTest {
         static Drawn of(long seed) {
             WorldMap map = MapGenerator.generate(seed);
             TrajectoryRecorder trajectory = new TrajectoryRecorder();
-            RunResult result = Simulator.run(map, seed, Set.of(), trajectory).result();
+            RunResult result = BuiltinRuns.run(map, seed, Set.of(), trajectory).result();
             return new Drawn(map, trajectory, result);
         }
 

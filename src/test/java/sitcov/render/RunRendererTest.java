@@ -20,6 +20,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.judge.Simulator;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
@@ -42,7 +43,7 @@ class RunRendererTest {
     @BeforeAll
     static void runAndRenderOnce() {
         trajectory = new TrajectoryRecorder();
-        result = Simulator.run(MAP, 100, Set.of(), trajectory).result();
+        result = BuiltinRuns.run(MAP, 100, Set.of(), trajectory).result();
         plain = new MapRenderer(SCALE).render(MAP);
         picture = new RunRenderer(SCALE).render(MAP, trajectory, result);
     }

@@ -13,15 +13,16 @@ import java.util.Set;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import sitcov.judge.Simulator;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.geom.Box;
 import sitcov.geom.BoxGap;
+import sitcov.judge.Simulator;
 import sitcov.oracle.AccidentType;
 import sitcov.oracle.NearMiss;
 import sitcov.oracle.RunResult;
 import sitcov.world.Dimensions;
-import sitcov.world.ParkedCar;
 import sitcov.world.MapGenerator;
+import sitcov.world.ParkedCar;
 import sitcov.world.WorldMap;
 
 class TraceWriterTest {
@@ -37,7 +38,7 @@ class TraceWriterTest {
 
     private static RunResult trace(Path file) throws IOException {
         try (TraceWriter writer = new TraceWriter(file, MAP.seed(), INTERNAL_SEED)) {
-            return Simulator.run(MAP, INTERNAL_SEED, Set.of(), writer).result();
+            return BuiltinRuns.run(MAP, INTERNAL_SEED, Set.of(), writer).result();
         }
     }
 
@@ -107,7 +108,7 @@ class TraceWriterTest {
         WorldMap map = MapGenerator.generate(1);
         Path file = dir.resolve("one.csv");
         try (TraceWriter writer = new TraceWriter(file, map.seed(), 1)) {
-            Simulator.run(map, 1, Set.of(), writer);
+            BuiltinRuns.run(map, 1, Set.of(), writer);
         }
         List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
         int column = List.of(lines.get(0).split(",")).indexOf("near_parked_gap");
@@ -143,7 +144,7 @@ class TraceWriterTest {
     void theFileAppearsOnlyWhenClosedAndNoTemporaryFileIsLeft(@TempDir Path dir) throws IOException {
         Path file = dir.resolve("trace.csv");
         TraceWriter writer = new TraceWriter(file, MAP.seed(), INTERNAL_SEED);
-        Simulator.run(MAP, INTERNAL_SEED, Set.of(), writer);
+        BuiltinRuns.run(MAP, INTERNAL_SEED, Set.of(), writer);
         assertFalse(Files.exists(file), "visible before close()");
         writer.close();
         writer.close();

@@ -1,19 +1,20 @@
 package sitcov.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Set;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.faults.Fault;
 import sitcov.geom.Bearing;
 import sitcov.judge.RunObserver;
 import sitcov.judge.Simulator;
 import sitcov.oracle.RunResult;
 import sitcov.vehicles.Dynamics;
-import sitcov.vehicles.OvertakingStage;
 import sitcov.world.MapGenerator;
 import sitcov.world.StartPose;
 import sitcov.world.WorldMap;
@@ -29,7 +30,7 @@ class TrajectoryRecorderTest {
     @BeforeAll
     static void runOnce() {
         recorder = new TrajectoryRecorder();
-        result = Simulator.run(MAP, INTERNAL_SEED, Set.of(), recorder).result();
+        result = BuiltinRuns.run(MAP, INTERNAL_SEED, Set.of(), recorder).result();
     }
 
     @Test
@@ -62,7 +63,7 @@ class TrajectoryRecorderTest {
     void keepsTheRunsFinalListOfAccidents() {
         // waypoints displaced south-east take the car off the road on nearly every map
         TrajectoryRecorder faulty = new TrajectoryRecorder();
-        RunResult run = Simulator.run(MAP, INTERNAL_SEED, Set.of(Fault.WAYPOINTS_SOUTH_EAST), faulty).result();
+        RunResult run = BuiltinRuns.run(MAP, INTERNAL_SEED, Set.of(Fault.WAYPOINTS_SOUTH_EAST), faulty).result();
         assertTrue(run.hasAccident(), "the fixture needs a run with accidents, got " + run.accidents());
         assertEquals(run.accidents(), faulty.accidents());
     }
@@ -70,10 +71,8 @@ class TrajectoryRecorderTest {
     @Test
     void recordsTheCarsStateInEveryEntry() {
         for (int i = 0; i < recorder.ticks(); i++) {
-            OvertakingStage stage = recorder.stage(i);
-            assertTrue(stage != null, "entry " + i);
             if (recorder.crossing(i)) {
-                assertEquals(OvertakingStage.NOT_OVERTAKING, stage, "overtakes while crossing at " + i);
+                assertFalse(recorder.overtaking(i), "overtakes while crossing at " + i);
             }
         }
     }
@@ -81,7 +80,7 @@ class TrajectoryRecorderTest {
     @Test
     void refusesAnEntryItDoesNotHave() {
         assertThrows(IndexOutOfBoundsException.class, () -> recorder.x(recorder.ticks()));
-        assertThrows(IndexOutOfBoundsException.class, () -> recorder.stage(-1));
+        assertThrows(IndexOutOfBoundsException.class, () -> recorder.overtaking(-1));
         TrajectoryRecorder empty = new TrajectoryRecorder();
         assertEquals(0, empty.ticks());
         assertEquals(0, empty.accidents().size());
@@ -96,8 +95,8 @@ class TrajectoryRecorderTest {
             first.afterTick(tick, scene, detector);
             second.afterTick(tick, scene, detector);
         };
-        RunResult observed = Simulator.run(MAP, INTERNAL_SEED, Set.of(), both).result();
-        assertEquals(Simulator.run(MAP, INTERNAL_SEED), observed);
+        RunResult observed = BuiltinRuns.run(MAP, INTERNAL_SEED, Set.of(), both).result();
+        assertEquals(BuiltinRuns.run(MAP, INTERNAL_SEED), observed);
         assertEquals(first.ticks(), second.ticks());
         assertEquals(recorder.x(recorder.ticks() - 1), second.x(second.ticks() - 1));
     }

@@ -1,8 +1,8 @@
 package sitcov.report;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -14,6 +14,7 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.builtin.BuiltinCar;
 import sitcov.coverage.GridDefinition;
 import sitcov.drivers.Drivers;
 import sitcov.experiment.BudgetKind;
@@ -56,8 +57,8 @@ class ResultsRecorderTest {
         ExperimentConfig config = new ExperimentConfig("built", 5, 6, 1, FaultSet.parse("19"), BudgetKind.TICKS,
                 GridDefinition.paper(), List.of("builder"), List.of(), 6, FaultyRuns.UNTIL_VERDICT);
         Manifest manifest = new Manifest(config, "test", Shard.WHOLE, false, false);
-        ResultsRecorder recorder = ResultsRecorder.create(dir, manifest, Map.of(), System::nanoTime);
-        new ExperimentRunner(config, WITH_BUILDER, Shard.WHOLE, recorder.journal(), 1, System::nanoTime, List.of(recorder))
+        ResultsRecorder recorder = ResultsRecorder.create(dir, manifest, Map.of(), System::nanoTime, BuiltinCar.FACTORY);
+        new ExperimentRunner(config, WITH_BUILDER, Shard.WHOLE, recorder.journal(), 1, System::nanoTime, List.of(recorder), BuiltinCar.SOURCE)
                 .run();
 
         Journal journal = JournalFiles.read(dir, manifest);
@@ -79,9 +80,9 @@ class ResultsRecorderTest {
         ExperimentConfig config = new ExperimentConfig("modes", 5, 3, 1, FaultSet.parse("19"), BudgetKind.TICKS,
                 GridDefinition.paper(), List.of("random"), List.of(), 3, FaultyRuns.UNTIL_VERDICT);
         ResultsRecorder recorder = ResultsRecorder.create(dir, new Manifest(config, "test", Shard.WHOLE, false, false),
-                Map.of(), System::nanoTime);
+                Map.of(), System::nanoTime, BuiltinCar.FACTORY);
         new ExperimentRunner(config, Drivers.standard(), Shard.WHOLE, recorder.journal(), 1, System::nanoTime,
-                List.of(recorder)).run();
+                List.of(recorder), BuiltinCar.SOURCE).run();
         try (var files = Files.list(dir)) {
             for (Path f : files.toList()) {
                 assertEquals("rw-r--r--", PosixFilePermissions.toString(Files.getPosixFilePermissions(f)), f.toString());
@@ -94,33 +95,33 @@ class ResultsRecorderTest {
         ExperimentConfig config = new ExperimentConfig("kept", 5, 6, 1, FaultSet.parse("19"), BudgetKind.TICKS,
                 GridDefinition.paper(), List.of("builder"), List.of(), 6, FaultyRuns.UNTIL_VERDICT);
         ResultsRecorder recorder = ResultsRecorder.create(dir, new Manifest(config, "test", Shard.WHOLE, false, false),
-                Map.of(), System::nanoTime);
-        new ExperimentRunner(config, WITH_BUILDER, Shard.WHOLE, recorder.journal(), 1, System::nanoTime, List.of(recorder))
+                Map.of(), System::nanoTime, BuiltinCar.FACTORY);
+        new ExperimentRunner(config, WITH_BUILDER, Shard.WHOLE, recorder.journal(), 1, System::nanoTime, List.of(recorder), BuiltinCar.SOURCE)
                 .run();
         Path kept = ResultsFolder.situation(dir, "built-1");
         String text = Files.readString(kept);
-        ResultsFinisher.report(dir);
+        ResultsFinisher.report(dir, BuiltinCar.FACTORY);
 
         // a road moved by hand: "road 0 NORTH_SOUTH 55.06 ..." becomes "road 0 NORTH_SOUTH 550.06 ..."
         String edited = text.replaceFirst("(?m)^(road \\S+ \\S+ \\d+)", "$10");
         assertNotEquals(text, edited);
         Files.writeString(kept, edited);
-        IllegalArgumentException changed = assertThrows(IllegalArgumentException.class, () -> ResultsFinisher.report(dir));
+        IllegalArgumentException changed = assertThrows(IllegalArgumentException.class, () -> ResultsFinisher.report(dir, BuiltinCar.FACTORY));
         assertTrue(changed.getMessage().startsWith(kept + " was changed after sitcov wrote it (it does not match the check in "
                 + dir.resolve(ResultsFolder.RUNS) + ":"), changed.getMessage());
 
         Files.delete(kept);
-        IllegalArgumentException missing = assertThrows(IllegalArgumentException.class, () -> ResultsFinisher.report(dir));
+        IllegalArgumentException missing = assertThrows(IllegalArgumentException.class, () -> ResultsFinisher.report(dir, BuiltinCar.FACTORY));
         assertTrue(missing.getMessage().startsWith(kept + " is missing, but " + dir.resolve(ResultsFolder.RUNS) + ":"),
                 missing.getMessage());
         // a resume reads the journal the same way, and gives the folder up again when it refuses it
         Manifest unfinished = Manifest.read(dir).complete(false);
         IllegalArgumentException resumed = assertThrows(IllegalArgumentException.class,
-                () -> ResultsRecorder.resume(dir, unfinished, Map.of(), System::nanoTime));
+                () -> ResultsRecorder.resume(dir, unfinished, Map.of(), System::nanoTime, BuiltinCar.FACTORY));
         assertTrue(resumed.getMessage().startsWith(kept + " is missing"), resumed.getMessage());
 
         Files.writeString(kept, text);
-        ResultsFinisher.report(dir);
+        ResultsFinisher.report(dir, BuiltinCar.FACTORY);
     }
 
     @Test
@@ -141,10 +142,10 @@ class ResultsRecorderTest {
                 GridDefinition.paper(), List.of("reusing"), List.of(), 6, FaultyRuns.UNTIL_VERDICT);
         Path kept = ResultsFolder.situation(dir, "built-0");
         ResultsRecorder recorder = ResultsRecorder.create(dir, new Manifest(config, "test", Shard.WHOLE, false, false),
-                Map.of(), System::nanoTime);
+                Map.of(), System::nanoTime, BuiltinCar.FACTORY);
         // one thread: replication 0 runs first and keeps its file
         ExperimentRunner runner = new ExperimentRunner(config, reusing, Shard.WHOLE, recorder.journal(), 1,
-                System::nanoTime, List.of(recorder));
+                System::nanoTime, List.of(recorder), BuiltinCar.SOURCE);
         IllegalStateException e = assertThrows(IllegalStateException.class, runner::run);
         recorder.close();
 
@@ -161,9 +162,9 @@ class ResultsRecorderTest {
                 GridDefinition.paper());
         Shard third = new Shard(3, 3);
         ResultsRecorder recorder = ResultsRecorder.create(dir, new Manifest(config, "test", third, false, false), Map.of(),
-                System::nanoTime);
+                System::nanoTime, BuiltinCar.FACTORY);
         ExperimentRunner runner = new ExperimentRunner(config, Drivers.standard(), third, recorder.journal(), 1,
-                System::nanoTime, List.of(recorder));
+                System::nanoTime, List.of(recorder), BuiltinCar.SOURCE);
         assertEquals(List.of(), runner.replications());
         assertTrue(runner.run());
         recorder.close();
@@ -180,7 +181,7 @@ class ResultsRecorderTest {
                 GridDefinition.paper(), List.of("random"), List.of(), 4, FaultyRuns.UNTIL_VERDICT);
         Path folder = dir.resolve("results");
         ResultsRecorder recorder = ResultsRecorder.create(folder, new Manifest(config, "test", Shard.WHOLE, false, false),
-                Map.of(), System::nanoTime);
+                Map.of(), System::nanoTime, BuiltinCar.FACTORY);
         int[] judged = {0};
         // after the first judged map is journalled, the folder goes, as an 'rm -r' beside the run would take it
         ExperimentListener remover = event -> {
@@ -195,7 +196,7 @@ class ResultsRecorderTest {
             }
         };
         ExperimentRunner runner = new ExperimentRunner(config, Drivers.standard(), Shard.WHOLE, recorder.journal(), 1,
-                System::nanoTime, List.of(recorder, remover));
+                System::nanoTime, List.of(recorder, remover), BuiltinCar.SOURCE);
         FolderLock.Lost lost = assertThrows(FolderLock.Lost.class, runner::run);
         recorder.close();
         assertTrue(lost.getMessage().contains("the results folder " + folder + " was deleted"), lost.getMessage());

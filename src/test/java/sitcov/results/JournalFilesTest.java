@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import sitcov.builtin.BuiltinCar;
 import sitcov.coverage.GridDefinition;
 import sitcov.drivers.Drivers;
 import sitcov.experiment.BudgetKind;
@@ -29,9 +30,9 @@ class JournalFilesTest {
         ExperimentConfig config = new ExperimentConfig("older", 5, 3, 1, FaultSet.parse("19"), BudgetKind.TICKS,
                 GridDefinition.paper(), List.of("random"), List.of(), 3, FaultyRuns.UNTIL_VERDICT);
         Manifest manifest = new Manifest(config, "test", Shard.WHOLE, false, false);
-        ResultsRecorder recorder = ResultsRecorder.create(dir, manifest, Map.of(), System::nanoTime);
+        ResultsRecorder recorder = ResultsRecorder.create(dir, manifest, Map.of(), System::nanoTime, BuiltinCar.FACTORY);
         new ExperimentRunner(config, Drivers.standard(), Shard.WHOLE, recorder.journal(), 1, System::nanoTime,
-                List.of(recorder)).run();
+                List.of(recorder), BuiltinCar.SOURCE).run();
         return Manifest.read(dir);
     }
 

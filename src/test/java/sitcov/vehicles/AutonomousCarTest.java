@@ -7,25 +7,24 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.BiConsumer;
+import org.junit.jupiter.api.Test;
 import sitcov.control.Channel;
 import sitcov.control.Command;
 import sitcov.control.ControllerFactory;
 import sitcov.control.Observation;
 import sitcov.engine.SimState;
-import sitcov.faults.FaultSwitchboard;
 import sitcov.geom.Compass;
 import sitcov.geom.Vec2;
 import sitcov.world.Situations;
 import sitcov.world.StartPose;
 import sitcov.world.WorldMap;
-import org.junit.jupiter.api.Test;
 
 /** The world's side of the seam: what it hands a controller, and what it makes of the command. */
 class AutonomousCarTest {
     private static Scene scene(WorldMap map, BiConsumer<Observation, Command> controller) {
         SimState state = new SimState(1);
         ControllerFactory factory = run -> controller::accept;
-        return Scene.start(map, state, FaultSwitchboard.none(), factory);
+        return Scene.start(map, state, factory);
     }
 
     @Test

@@ -10,6 +10,8 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinCar;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.faults.Fault;
 import sitcov.judge.LiveRun;
 import sitcov.judge.Simulator;
@@ -19,7 +21,6 @@ import sitcov.oracle.Outcome;
 import sitcov.oracle.RunResult;
 import sitcov.render.MapRenderer;
 import sitcov.vehicles.AutonomousCar;
-import sitcov.vehicles.BuiltinCar;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
 
@@ -45,7 +46,7 @@ class RunPainterTest {
     @Test
     void theCarIsPaintedWhereTheRunHasItAndFollowsItAsTheRunIsStepped() {
         WorldMap map = MapGenerator.generate(1);
-        RunPainter painter = new RunPainter(new LiveRun(map, 1, Set.of()), "test", 4);
+        RunPainter painter = new RunPainter(BuiltinRuns.live(map, 1, Set.of()), "test", 4);
         for (int i = 0; i < 60; i++) {
             painter.run().step();
         }
@@ -76,27 +77,27 @@ class RunPainterTest {
     @Test
     void aLiveRunSteppedToTheEndIsTheSimulatorsRun() {
         WorldMap map = MapGenerator.generate(7);
-        LiveRun live = new LiveRun(map, 7, Set.of());
+        LiveRun live = BuiltinRuns.live(map, 7, Set.of());
         while (live.step()) {
             // the viewer steps it frame by frame; here all at once
         }
-        assertEquals(Simulator.run(map, 7), live.record().result());
+        assertEquals(BuiltinRuns.run(map, 7), live.record().result());
     }
 
     @Test
     void onceARunHasEndedItsHeaderSaysHowInEachPane() {
         // seed 2: without faults the car reaches the Target; with fault 4 it leaves the road on the way
         WorldMap map = MapGenerator.generate(2);
-        RunPainter twin = new RunPainter(new LiveRun(map, 2, Set.of()), "without the fault", 3);
-        RunPainter faulty = new RunPainter(new LiveRun(map, 2, Set.of(Fault.ofId(4))), "with fault 4", 3);
+        RunPainter twin = new RunPainter(BuiltinRuns.live(map, 2, Set.of()), "without the fault", 3);
+        RunPainter faulty = new RunPainter(BuiltinRuns.live(map, 2, Set.of(Fault.ofId(4))), "with fault 4", 3);
         ViewerWindow window = new ViewerWindow(() -> List.of(twin, faulty));
         window.advance(1);
         assertTrue(window.painters().get(0).status().contains("km/h"), window.painters().get(0).status());
         for (int frame = 0; frame < 200; frame++) {
             window.advance(20);
         }
-        RunResult free = Simulator.run(map, 2);
-        RunResult withFault = Simulator.run(map, 2, Set.of(Fault.ofId(4)), (t, s, d) -> { }).result();
+        RunResult free = BuiltinRuns.run(map, 2);
+        RunResult withFault = BuiltinRuns.run(map, 2, Set.of(Fault.ofId(4)), (t, s, d) -> { }).result();
         assertEquals(Outcome.TARGET_REACHED, free.outcome());
         assertEquals(Outcome.TARGET_REACHED, withFault.outcome());
         Accident first = withFault.accidents().get(0);
@@ -112,7 +113,7 @@ class RunPainterTest {
     void theSceneIsClippedToTheMapSoTheCaptionStaysAsTheMapDrewIt() {
         // seed 1 ends at the Target 10 m from the map's south edge: the LIDAR's 25 m reach goes past it
         WorldMap map = MapGenerator.generate(1);
-        RunPainter painter = new RunPainter(new LiveRun(map, 1, Set.of()), "test", 3);
+        RunPainter painter = new RunPainter(BuiltinRuns.live(map, 1, Set.of()), "test", 3);
         while (painter.run().step()) {
             // to the end
         }
@@ -135,10 +136,10 @@ class RunPainterTest {
     @Test
     void theHeaderGivesTheNearMissesSoFarAsTheRunGoesOn() {
         WorldMap map = MapGenerator.generate(1);
-        RunPainter painter = new RunPainter(new LiveRun(map, 1, Set.of()), "test", 3);
+        RunPainter painter = new RunPainter(BuiltinRuns.live(map, 1, Set.of()), "test", 3);
         assertEquals("closest so far: nothing yet", painter.nearMisses());
-        RunResult whole = Simulator.run(map, 1);
-        LiveRun probe = new LiveRun(map, 1, Set.of());
+        RunResult whole = BuiltinRuns.run(map, 1);
+        LiveRun probe = BuiltinRuns.live(map, 1, Set.of());
         while (probe.step()) {
             // to the end, to learn when the least gap was reached
         }

@@ -7,6 +7,7 @@ import java.awt.Dimension;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import sitcov.builtin.BuiltinRuns;
 import sitcov.judge.LiveRun;
 import sitcov.world.MapGenerator;
 
@@ -39,15 +40,15 @@ class ViewerWindowTest {
 
     @Test
     void aPaneIsTheSizeTheWindowReckonsWith() {
-        RunPainter painter = new RunPainter(new LiveRun(MapGenerator.generate(1), 1, Set.of()), "test", 3);
+        RunPainter painter = new RunPainter(BuiltinRuns.live(MapGenerator.generate(1), 1, Set.of()), "test", 3);
         assertEquals(RunPainter.paneSize(3), painter.size());
     }
 
     @Test
     void backStepsEveryPaneATickBackToTheRunAsItWasThen() {
         java.util.function.Supplier<List<RunPainter>> runs = () -> List.of(
-                new RunPainter(new LiveRun(MapGenerator.generate(1), 1, Set.of()), "fault-free", 1),
-                new RunPainter(new LiveRun(MapGenerator.generate(1), 1, Set.of(sitcov.faults.Fault.CRAWL_DOUBLE_BRAKING)),
+                new RunPainter(BuiltinRuns.live(MapGenerator.generate(1), 1, Set.of()), "fault-free", 1),
+                new RunPainter(BuiltinRuns.live(MapGenerator.generate(1), 1, Set.of(sitcov.faults.Fault.CRAWL_DOUBLE_BRAKING)),
                         "fault 6", 1));
         ViewerWindow window = new ViewerWindow(runs);
         window.advance(60);

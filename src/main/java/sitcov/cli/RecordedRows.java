@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.Optional;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapId;
+import sitcov.judge.Variant;
 import sitcov.judge.FaultOutcome;
 import sitcov.judge.JudgedMap;
 import sitcov.judge.RunSummary;
@@ -17,14 +18,18 @@ final class RecordedRows {
 
     /** Refuses a row of a folder that tested another controller: these commands run the builtin car. */
     static void refuseOtherController(String command, Path folder, ResultsRows.Row row) throws UsageException {
-        if (row.config().controller().equals(ExperimentConfig.BUILTIN)) {
+        java.util.Optional<Variant> other = row.variant().filter(v -> v instanceof Variant.Controller);
+        if (row.config().controller().equals(ExperimentConfig.BUILTIN) && other.isEmpty()) {
             return;
         }
+        // the row's own controller: a variant that is a controller of its own, else the reference (with its seeded fault)
+        String controller = other.map(Variant::spec).orElse(row.config().controller());
+        String faults = row.fault().map(f -> " --faults " + f.id()).orElse("");
         String map = row.map().map() instanceof MapId.Situation s
                 ? "--load " + ResultsFolder.situation(folder, s.name()) : "--seed " + row.map().externalSeed();
-        throw new UsageException(command + ": " + folder + " tested the controller " + row.config().controller()
+        throw new UsageException(command + ": row " + row.number() + " of " + folder + " ran the controller " + controller
                 + ", and " + command + " runs the builtin car; run its map with that controller: 'simulate " + map
-                + " --internal-seed " + row.map().internalSeed() + " --controller \"" + row.config().controller()
+                + " --internal-seed " + row.map().internalSeed() + faults + " --controller \"" + controller
                 + "\" --png FILE'");
     }
 

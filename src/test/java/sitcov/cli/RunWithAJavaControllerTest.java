@@ -211,6 +211,16 @@ class RunWithAJavaControllerTest {
     }
 
     @Test
+    void simulatesSummaryCountsTheRunsWhoseControllerFailedAndReproducesWithIt() {
+        CliRunner r = CliRunner.run("simulate", "--maps", "3", "--summary", "--controller", "java:test-never-answers");
+        assertEquals(ExitCode.OK, r.exitCode(), r.err());
+        assertTrue(r.out().matches("(?s).*controller failed +3 +100\\.0%.*"), r.out());
+        assertTrue(r.out().matches("(?s).*CONTROLLER_TIMEOUT +3 +100\\.0%.*"), r.out());
+        assertTrue(r.out().contains("Seeds where the controller failed: 1, 2, 3"), r.out());
+        assertTrue(r.out().contains("--controller 'java:test-never-answers'"), "Reproduce keeps the controller: " + r.out());
+    }
+
+    @Test
     void theBuiltinCarsSeededFaultsAreRefusedForAnotherController(@TempDir Path dir) throws IOException {
         CliRunner r = CliRunner.run("run", preset(dir, "faults=14\n").toString(), "--out", dir.resolve("out").toString());
         assertEquals(ExitCode.USAGE, r.exitCode());

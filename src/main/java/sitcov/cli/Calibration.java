@@ -93,7 +93,7 @@ final class Calibration {
             for (Map.Entry<Outcome, Integer> e : controllerFailed.entrySet()) {
                 row(out, "  " + e.getKey(), e.getValue(), "");
             }
-            row(out, "any failure (accident or controller)", withAccident + failed, "");
+            row(out, "any failure incl. controller", withAccident + failed, "");
         }
         out.printf(Locale.ROOT, "  %-30s %8.1f%n", "mean ticks", runs == 0 ? 0.0 : (double) ticks / runs);
         out.printf(Locale.ROOT, "  %-30s %6d %6.3f a run   (target: at most 0.01)%n", "excused contacts (events)",

@@ -26,6 +26,8 @@ final class Calibration {
     private int withAccidentBesidesTimeout;
     private long ticks;
     private long excused;
+    private int runsClamped;
+    private long clampedTicks;
     private final Map<AccidentType, Long> events = new EnumMap<>(AccidentType.class);
     private final Map<AccidentType, Integer> runsWith = new EnumMap<>(AccidentType.class);
     private final List<Long> accidentSeeds = new ArrayList<>();
@@ -70,6 +72,10 @@ final class Calibration {
                 controllerSeeds.add(r.externalSeed());
             }
         }
+        if (r.clampedTicks() > 0) {
+            runsClamped++;
+            clampedTicks += r.clampedTicks();
+        }
         excused += r.excusedContacts().values().stream().mapToInt(Integer::intValue).sum();
         for (Map.Entry<AccidentType, Long> e : r.countsByType().entrySet()) {
             if (e.getValue() > 0) {
@@ -94,6 +100,11 @@ final class Calibration {
                 row(out, "  " + e.getKey(), e.getValue(), "");
             }
             row(out, "any failure incl. controller", withAccident + failed, "");
+        }
+        if (runsClamped > 0) {
+            // the world clamped commands beyond the car's limits (never the builtin car's): shown only then
+            out.printf(Locale.ROOT, "  %-30s %6d %6.1f%%   (%d ticks in all)%n", "runs with commands clamped", runsClamped,
+                    share(runsClamped), clampedTicks);
         }
         out.printf(Locale.ROOT, "  %-30s %8.1f%n", "mean ticks", runs == 0 ? 0.0 : (double) ticks / runs);
         out.printf(Locale.ROOT, "  %-30s %6d %6.3f a run   (target: at most 0.01)%n", "excused contacts (events)",

@@ -129,12 +129,18 @@ final class SimulateCommand implements Command {
         NearMissWatch nearMisses = new NearMissWatch();
         RunResult result;
         List<Activation> activations;
-        try (TraceWriter writer = trace.isPresent() ? new TraceWriter(trace.get(), map.seed(), internalSeed) : null) {
+        // the builtin car's traces keep the columns they always had
+        boolean builtin = options.value("--controller").orElse("builtin").equals("builtin");
+        String[] firstClamp = new String[1];
+        try (TraceWriter writer = trace.isPresent() ? new TraceWriter(trace.get(), map.seed(), internalSeed, !builtin) : null) {
             // why the controller failed, if it did: the outcome alone does not say
             String[] failure = new String[1];
             RunObserver observer = (tick, scene, detector) -> {
                 if (scene.failure() != null) {
                     failure[0] = scene.failure().getMessage();
+                }
+                if (firstClamp[0] == null && scene.clamped()) {
+                    firstClamp[0] = "tick " + tick + " (" + scene.clampNote() + ")";
                 }
                 nearMisses.afterTick(tick, scene, detector);
                 if (recorder != null) {
@@ -157,6 +163,10 @@ final class SimulateCommand implements Command {
             return ExitCode.FAILURE;
         }
         out.println(resultLine(result));
+        if (result.clampedTicks() > 0) {
+            out.println("  clamped: the world clamped the command of " + result.clampedTicks() + " tick"
+                    + (result.clampedTicks() == 1 ? "" : "s") + " to the car's limits, the first at " + firstClamp[0]);
+        }
         for (Activation a : activations) {
             if (a.active()) {
                 out.println("  fault " + a.fault().id() + " (" + a.fault().label() + "): "
@@ -259,6 +269,9 @@ final class SimulateCommand implements Command {
         int excused = r.excusedContacts().values().stream().mapToInt(Integer::intValue).sum();
         if (excused > 0) {
             s.append("; excused contacts: ").append(excused);
+        }
+        if (r.clampedTicks() > 0) {
+            s.append("; clamped ticks: ").append(r.clampedTicks());
         }
         return s.toString();
     }

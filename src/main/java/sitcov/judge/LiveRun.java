@@ -190,7 +190,8 @@ public final class LiveRun {
     public RunRecord record() {
         RunResult result = new RunResult(map.seed(), internalSeed, detector.outcome(), detector.accidents(),
                 detector.excusedContacts(), detector.ticks(), Margins.of(nearMisses),
-                scene.telemetry().failure() == null ? "" : java.util.Objects.toString(scene.telemetry().failure().getMessage(), ""));
+                scene.telemetry().failure() == null ? "" : java.util.Objects.toString(scene.telemetry().failure().getMessage(), ""),
+                scene.telemetry().clampedTicks());
         return new RunRecord(result, faults, switchboard.activations());
     }
 }

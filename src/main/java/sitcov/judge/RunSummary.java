@@ -9,9 +9,11 @@ import sitcov.oracle.RunResult;
 
 /**
  * What an experiment keeps of one simulated run: how it ended, its ticks, its accident events by
- * type, how close it came to each accident, and why its controller failed if it did (else empty).
+ * type, how close it came to each accident, why its controller failed if it did (else empty), and
+ * how many ticks' commands the world clamped (runs.csv keeps it only where it keeps the reason).
  */
-public record RunSummary(Outcome outcome, long ticks, List<Long> accidents, Margins margins, String failureReason) {
+public record RunSummary(Outcome outcome, long ticks, List<Long> accidents, Margins margins, String failureReason,
+                         long clampedTicks) {
     public RunSummary {
         Objects.requireNonNull(failureReason, "failureReason");
         accidents = List.copyOf(accidents);
@@ -20,6 +22,11 @@ public record RunSummary(Outcome outcome, long ticks, List<Long> accidents, Marg
                     + " accident types, got " + accidents.size());
         }
         Objects.requireNonNull(margins, "margins");
+    }
+
+    /** A summary whose clamped ticks were not kept. */
+    public RunSummary(Outcome outcome, long ticks, List<Long> accidents, Margins margins, String failureReason) {
+        this(outcome, ticks, accidents, margins, failureReason, 0);
     }
 
     /** A summary of a run whose controller did not fail, or whose reason was not kept. */
@@ -34,7 +41,7 @@ public record RunSummary(Outcome outcome, long ticks, List<Long> accidents, Marg
 
     public static RunSummary of(RunResult r) {
         return new RunSummary(r.outcome(), r.ticks(), List.copyOf(r.countsByType().values()), r.margins(),
-                r.failureReason());
+                r.failureReason(), r.clampedTicks());
     }
 
     public long count(AccidentType type) {

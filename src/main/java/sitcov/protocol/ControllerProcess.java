@@ -26,22 +26,40 @@ final class ControllerProcess {
     static final long EXIT_MILLIS = 2000;
     /** How long a dead program's stderr is given to be copied to the end, for the error message. */
     static final long DRAIN_MILLIS = 5000;
+    /** How long the end of a program's stdout is given to be followed by its exit, for the exit code. */
+    static final long EXIT_STATUS_MILLIS = 1000;
+    /** A log file keeps this much of its controllers' stderr; the rest is cut (README, "Timeouts, failures and processes"). */
+    static final long LOG_CAP_BYTES = 1 << 20;
+    /** Where a log is cut. */
+    static final String LOG_CUT = "\n[sitcov: stderr cut at 1 MB; the rest of this log's controller stderr is not kept]\n";
+    /** Bytes each log file may still take, by its absolute path: its processes, one after another, share the cap. */
+    private static final java.util.Map<Path, java.util.concurrent.atomic.AtomicLong> LOG_ROOM =
+            new java.util.concurrent.ConcurrentHashMap<>();
 
     // $1 is sitcov's pid, the rest is the controller's command line. The background job gets the
     // shell's stdin through fd 3 (a non-interactive shell would give it /dev/null), in a process
     // group of its own where setsid exists, so that whatever it starts is killed with it; the shell
-    // then closes its own stdin, stdout and stderr, so the program's exit is seen at once as the end
-    // of its stdout.
+    // then closes its own stdin, stdout and stderr. A watcher in the background checks once a second
+    // that sitcov is still there and kills the group when it is gone (even after kill -9); the shell
+    // itself waits for the program, and the moment it exits, however, kills its group (so that no
+    // descendant keeps the pipes open and sitcov reads the end of its stdout at once), stops the
+    // watcher and exits with the program's exit status: the shell's exit is the program's.
     private static final String WATCHDOG = String.join("\n",
             "sitcov=$1; shift",
             "exec 3<&0",
             "if command -v setsid >/dev/null 2>&1; then setsid \"$@\" <&3 3<&- & else \"$@\" <&3 3<&- & fi",
             "child=$!",
             "exec 3<&- </dev/null >/dev/null 2>&1",
-            "while kill -0 \"$sitcov\" 2>/dev/null; do sleep 1; done",
-            "kill -TERM -\"$child\" 2>/dev/null || kill -TERM \"$child\" 2>/dev/null",
-            "sleep 1",
-            "kill -KILL -\"$child\" 2>/dev/null || kill -KILL \"$child\" 2>/dev/null");
+            "( while kill -0 \"$sitcov\" 2>/dev/null; do sleep 1; done",
+            "  kill -TERM -\"$child\" 2>/dev/null || kill -TERM \"$child\" 2>/dev/null",
+            "  sleep 1",
+            "  kill -KILL -\"$child\" 2>/dev/null || kill -KILL \"$child\" 2>/dev/null ) &",
+            "watcher=$!",
+            "wait \"$child\"",
+            "code=$?",
+            "kill -KILL -\"$child\" 2>/dev/null",
+            "kill -KILL \"$watcher\" 2>/dev/null",
+            "exit \"$code\"");
 
     private final Process process;
     private final Thread drain;
@@ -51,8 +69,11 @@ final class ControllerProcess {
         this.process = process;
         OutputStream logStream = log == null ? OutputStream.nullOutputStream()
                 : Files.newOutputStream(log, StandardOpenOption.CREATE, StandardOpenOption.APPEND);
+        java.util.concurrent.atomic.AtomicLong room = log == null ? new java.util.concurrent.atomic.AtomicLong(Long.MAX_VALUE)
+                : LOG_ROOM.computeIfAbsent(log.toAbsolutePath().normalize(), p -> new java.util.concurrent.atomic.AtomicLong(
+                        LOG_CAP_BYTES - sizeOf(p)));
         InputStream err = process.getErrorStream();
-        this.drain = new Thread(() -> copy(err, logStream), "sitcov-controller-stderr-" + process.pid());
+        this.drain = new Thread(() -> copy(err, logStream, room), "sitcov-controller-stderr-" + process.pid());
         drain.setDaemon(true);
         drain.start();
     }
@@ -76,7 +97,7 @@ final class ControllerProcess {
                     + (log == null ? "" : " (log " + log + ")"));
         }
         Session session = new Session(shown, new Lines(started.process.getInputStream(), started.process.getOutputStream()),
-                started::kill, started::reap, started::tail);
+                started::kill, started::reap, started::tail, started::exitStatus);
         session.handshake(sitcovVersion, handshakeMillis);
         return session;
     }
@@ -87,21 +108,65 @@ final class ControllerProcess {
     }
 
     /**
-     * Kills the program, everything it started, and the watchdog shell, by signal only:
-     * {@link Process#destroyForcibly} would also close the streams, and the stderr not yet copied
-     * would be lost to the error message (the JDK closes them itself once the shell has exited).
+     * Kills the program and everything it started, by signal only: the watchdog shell, waiting for
+     * the program, then kills its process group (descendants that were orphaned included) and exits.
+     * {@link Process#destroyForcibly} of the shell itself would leave the group behind, and would
+     * also close the streams, losing the stderr not yet copied to the error message (the JDK closes
+     * them itself once the shell has exited). Should the shell not have exited {@link #EXIT_MILLIS}
+     * later, it is killed too.
      */
     private void kill() {
         process.descendants().forEach(ProcessHandle::destroyForcibly);
-        process.toHandle().destroyForcibly();
+        java.util.concurrent.CompletableFuture.delayedExecutor(EXIT_MILLIS, TimeUnit.MILLISECONDS).execute(() -> {
+            if (process.isAlive()) {
+                process.descendants().forEach(ProcessHandle::destroyForcibly);
+                process.toHandle().destroyForcibly();
+            }
+        });
     }
 
-    private void copy(InputStream err, OutputStream log) {
+    /**
+     * How the program ended, for a message about its output's end: " with exit code N" (and the
+     * signal that killed it), waiting up to {@link #EXIT_STATUS_MILLIS} for the watchdog shell to
+     * pass the exit on; "" when it has not exited (it only closed its stdout).
+     */
+    private String exitStatus() {
+        try {
+            process.waitFor(EXIT_STATUS_MILLIS, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        if (process.isAlive()) {
+            return "";
+        }
+        int code = process.exitValue();
+        return " with exit code " + code + (code > 128 && code < 128 + 65 ? " (killed by signal " + (code - 128) + ")" : "");
+    }
+
+    private static long sizeOf(Path log) {
+        try {
+            return Files.exists(log) ? Files.size(log) : 0;
+        } catch (IOException e) {
+            return 0;
+        }
+    }
+
+    /** Copies stderr to the log while the log has room, marks the cut once, and keeps the tail either way. */
+    private void copy(InputStream err, OutputStream log, java.util.concurrent.atomic.AtomicLong room) {
         byte[] buffer = new byte[8192];
         try (log; err) {
             for (int n = err.read(buffer); n >= 0; n = err.read(buffer)) {
-                log.write(buffer, 0, n);
-                log.flush();
+                long before = room.getAndAdd(-n);
+                if (before > 0) {
+                    log.write(buffer, 0, (int) Math.min(n, before));
+                }
+                if (before >= 0 && before < n) {
+                    // the first bytes that do not fit: the room goes below 0 for good
+                    log.write(LOG_CUT.getBytes(StandardCharsets.UTF_8));
+                }
+                if (before >= 0) {
+                    log.flush();
+                }
                 synchronized (tail) {
                     tail.append(new String(buffer, 0, n, StandardCharsets.UTF_8));
                     if (tail.length() > 4 * TAIL_CHARS) {
@@ -134,27 +199,24 @@ final class ControllerProcess {
     }
 
     /**
-     * After its input was closed: waits up to {@link #EXIT_MILLIS} for the program to exit, then
-     * kills it (if it is still there) and the watchdog shell, which would otherwise go on watching.
+     * After its input was closed: waits up to {@link #EXIT_MILLIS} for the program to exit (the
+     * watchdog shell then kills its group and exits), then kills it if it is still there, and
+     * returns once the shell is gone and the program's stderr has ended (up to {@link
+     * #DRAIN_MILLIS}): by then everything of it that held its stderr has let go of its files.
      */
     private void reap() {
-        // the watchdog's own `sleep 1` is no program to wait for
-        List<ProcessHandle> programs = process.descendants()
-                .filter(p -> !p.info().command().map(c -> c.endsWith("/sleep") || c.equals("sleep")).orElse(false))
-                .toList();
-        long until = System.nanoTime() + EXIT_MILLIS * 1_000_000;
         try {
-            for (ProcessHandle p : programs) {
-                long left = until - System.nanoTime();
-                if (left > 0) {
-                    p.onExit().get(left, TimeUnit.NANOSECONDS);
+            if (!process.waitFor(EXIT_MILLIS, TimeUnit.MILLISECONDS)) {
+                kill();
+                if (!process.waitFor(EXIT_MILLIS, TimeUnit.MILLISECONDS)) {
+                    process.descendants().forEach(ProcessHandle::destroyForcibly);
+                    process.toHandle().destroyForcibly();
                 }
             }
-        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
-            // killed below
+            drain.join(DRAIN_MILLIS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+            kill();
         }
-        kill();
     }
 }

@@ -26,6 +26,7 @@ final class Session implements AutoCloseable {
     private final Runnable kill;
     private final Runnable reap;
     private final Supplier<String> stderrTail;
+    private final Supplier<String> exitStatus;
     private final JsonWriter writer = new JsonWriter();
     private final AtomicInteger state = new AtomicInteger(IDLE);
     private volatile long deadline;
@@ -40,11 +41,21 @@ final class Session implements AutoCloseable {
      * @param stderrTail the last lines it wrote to stderr ("" when none are kept)
      */
     Session(String shown, Lines lines, Runnable kill, Runnable reap, Supplier<String> stderrTail) {
+        this(shown, lines, kill, reap, stderrTail, () -> "");
+    }
+
+    /**
+     * @param exitStatus how the program ended once its output did, e.g. " with exit code 3" ("" when
+     *                   unknown or it has not exited)
+     */
+    Session(String shown, Lines lines, Runnable kill, Runnable reap, Supplier<String> stderrTail,
+            Supplier<String> exitStatus) {
         this.shown = shown;
         this.lines = lines;
         this.kill = kill;
         this.reap = reap;
         this.stderrTail = stderrTail;
+        this.exitStatus = exitStatus;
     }
 
     /** Sends sitcov's hello and reads the controller's within {@code timeoutMillis}. */
@@ -117,14 +128,14 @@ final class Session implements AutoCloseable {
             if (state.get() == TIMED_OUT) {
                 throw timeout(now.tick(), timeoutMillis);
             }
-            throw error("it exited or closed its input before the observation of tick " + now.tick() + " ("
-                    + e.getMessage() + ")");
+            throw error("it exited" + exitStatus.get() + " or closed its input before the observation of tick "
+                    + now.tick() + " (" + e.getMessage() + ")");
         }
         if (state.get() == TIMED_OUT) {
             throw timeout(now.tick(), timeoutMillis);
         }
         if (line == null) {
-            throw error("it exited at tick " + now.tick() + " instead of answering the observation");
+            throw error("it exited" + exitStatus.get() + " at tick " + now.tick() + " instead of answering the observation");
         }
         return line;
     }

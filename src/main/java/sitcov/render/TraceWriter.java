@@ -40,17 +40,28 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
     private final String seeds;
     private final StringBuilder row = new StringBuilder(256);
     private final NearMissWatch nearMisses = new NearMissWatch();
+    private final boolean clamps;
     private boolean closed;
     private boolean failed;
 
     public TraceWriter(Path file, long externalSeed, long internalSeed) throws IOException {
+        this(file, externalSeed, internalSeed, false);
+    }
+
+    /**
+     * @param clamps whether to end each row with a {@code clamped} column: what the world clamped in
+     *               the tick's command (asked and given), empty when nothing; for controllers other
+     *               than the builtin car, whose traces keep the columns they always had
+     */
+    public TraceWriter(Path file, long externalSeed, long internalSeed, boolean clamps) throws IOException {
+        this.clamps = clamps;
         this.target = file.toAbsolutePath();
         this.file = OutputFile.open(target);
         this.seeds = externalSeed + "," + internalSeed + ",";
         try {
             this.out = new BufferedWriter(new java.io.OutputStreamWriter(this.file.stream(), StandardCharsets.UTF_8));
             out.write(HEADER);
-            out.write('\n');
+            out.write(clamps ? ",clamped\n" : "\n");
         } catch (IOException | RuntimeException e) {
             this.file.close();
             throw e;
@@ -82,6 +93,9 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
         }
         for (AccidentType t : AccidentType.values()) {
             row.append(',').append(margin(watched.robustness(t)));
+        }
+        if (clamps) {
+            row.append(',').append(run.clamped() ? text(run.clampNote()) : "");
         }
         row.append('\n');
         try {

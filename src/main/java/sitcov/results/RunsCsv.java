@@ -35,6 +35,8 @@ public final class RunsCsv {
     private static final String PAPER_FOUND = "paper_found";
     /** Why the run's controller failed: only in folders of experiments whose controllers could fail. */
     private static final String CONTROLLER_FAILURE = "controller_failure";
+    /** How many ticks' commands the world clamped: beside controller_failure, in the same folders. */
+    private static final String CLAMPED_TICKS = "clamped_ticks";
     /** A reason is kept to this many characters, on one line and without commas. */
     private static final int REASON_CHARS = 240;
     /** The columns only a faulty run has: empty in the fault-free row. */
@@ -67,8 +69,12 @@ public final class RunsCsv {
         all.addAll(margins);
         if (reasons) {
             all.add(CONTROLLER_FAILURE);
+            all.add(CLAMPED_TICKS);
         }
-        this.columns = new Columns(all, java.util.Set.copyOf(margins));
+        // a folder of another controller written before clamped ticks were counted lacks them: read as 0
+        java.util.Set<String> optional = new java.util.HashSet<>(margins);
+        optional.add(CLAMPED_TICKS);
+        this.columns = new Columns(all, optional);
     }
 
     /** The near-miss and robustness columns, last: a folder written before they were kept lacks them and reads them unknown. */
@@ -122,7 +128,7 @@ public final class RunsCsv {
     private void result(Columns.Row row, RunSummary r) {
         row.set("outcome", r.outcome()).set("ticks", r.ticks());
         if (reasons) {
-            row.set(CONTROLLER_FAILURE, reason(r.failureReason()));
+            row.set(CONTROLLER_FAILURE, reason(r.failureReason())).set(CLAMPED_TICKS, r.clampedTicks());
         }
         for (AccidentType t : AccidentType.values()) {
             row.set(t.column(), r.accidents().get(t.ordinal()));
@@ -232,7 +238,7 @@ public final class RunsCsv {
             rho.add(margin(row.get(t.robustnessColumn())));
         }
         return new RunSummary(Outcome.valueOf(row.get("outcome")), row.longValue("ticks"), counts, new Margins(near, rho),
-                reasons ? row.get(CONTROLLER_FAILURE) : "");
+                reasons ? row.get(CONTROLLER_FAILURE) : "", reasons && !row.get(CLAMPED_TICKS).isEmpty() ? row.longValue(CLAMPED_TICKS) : 0);
     }
 
     private static void check(boolean ok, String expected) {

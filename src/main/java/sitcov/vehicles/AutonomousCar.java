@@ -38,6 +38,8 @@ public final class AutonomousCar implements Bodied, Steppable {
     private double steering;
     private boolean clamped;
     private long clampedTicks;
+    private double askedSpeed;
+    private double askedSteering;
     private boolean reachedTarget;
     private ControllerFailure failure;
     private Box keptClear;
@@ -69,9 +71,72 @@ public final class AutonomousCar implements Bodied, Steppable {
             return;
         }
         report.copyOf(command.report());
+        String broken = brokenJunctionRule();
+        if (broken != null) {
+            failure = new ControllerFailure(ControllerFailure.Kind.ERROR, "the controller broke the world's rules: " + broken);
+            return;
+        }
         grantRightOfWay(state.tick());
         drive();
         reachedTarget = arrival.isReached(body.x(), body.y());
+    }
+
+    /**
+     * The junction rule the command breaks, or null (README, "How the car moves"): it names only
+     * junctions of the map; it claims a junction only within {@link JunctionRules#CLAIM_WITHIN} of
+     * its square; after its releases it holds and asks for at most {@link JunctionRules#MAX_HELD}.
+     */
+    private String brokenJunctionRule() {
+        int junctions = scene.network().junctions().size();
+        for (int i = 0; i < command.releaseCount(); i++) {
+            int j = command.releaseAt(i);
+            if (j < 0 || j >= junctions) {
+                return "it released junction " + j + ", which the map does not have (its junctions are 0.." + (junctions - 1) + ")";
+            }
+        }
+        if (command.claimCount() == 0) {
+            return null;
+        }
+        for (int i = 0; i < command.claimCount(); i++) {
+            int j = command.claimAt(i);
+            if (j < 0 || j >= junctions) {
+                return "it claimed junction " + j + ", which the map does not have (its junctions are 0.." + (junctions - 1) + ")";
+            }
+            double d = distanceToSquare(scene.network().junctions().get(j).square());
+            if (d > JunctionRules.CLAIM_WITHIN) {
+                return String.format(java.util.Locale.ROOT, "it claimed junction %d %.1f m from its square; a junction may be"
+                        + " claimed only within %.0f m of its square", j, d, JunctionRules.CLAIM_WITHIN);
+            }
+        }
+        JunctionOccupancy occupancy = scene.occupancy();
+        int wanted = 0;
+        StringBuilder which = new StringBuilder();
+        for (int j = 0; j < junctions; j++) {
+            boolean released = false;
+            for (int i = 0; i < command.releaseCount() && !released; i++) {
+                released = command.releaseAt(i) == j;
+            }
+            boolean claimed = false;
+            for (int i = 0; i < command.claimCount() && !claimed; i++) {
+                claimed = command.claimAt(i) == j;
+            }
+            if (claimed || occupancy.isHeldBy(j, ID) && !released) {
+                wanted++;
+                which.append(which.length() == 0 ? "" : ", ").append(j).append(claimed ? " claimed" : " held");
+            }
+        }
+        if (wanted > JunctionRules.MAX_HELD) {
+            return "after its releases it held and claimed " + wanted + " junctions (" + which + "); a car may hold at most "
+                    + JunctionRules.MAX_HELD + " at once";
+        }
+        return null;
+    }
+
+    /** How far the car's front centre is from {@code square} (0 inside it). */
+    private double distanceToSquare(sitcov.geom.Rect square) {
+        double dx = Math.max(0, Math.max(square.minX() - body.x(), body.x() - square.maxX()));
+        double dy = Math.max(0, Math.max(square.minY() - body.y(), body.y() - square.maxY()));
+        return Math.hypot(dx, dy);
     }
 
     /** Lets go first, then asks: a junction asked for is given when the signal showed it would be. */
@@ -79,14 +144,11 @@ public final class AutonomousCar implements Bodied, Steppable {
         JunctionOccupancy occupancy = scene.occupancy();
         for (int i = 0; i < command.releaseCount(); i++) {
             int j = command.releaseAt(i);
-            if (j >= 0 && j < scene.network().junctions().size()) {
-                occupancy.release(j, ID);
-            }
+            occupancy.release(j, ID);
         }
         for (int i = 0; i < command.claimCount(); i++) {
             int j = command.claimAt(i);
-            if (j >= 0 && j < scene.network().junctions().size()
-                    && !scene.isOccupiedByOther(scene.network().junctions().get(j), this)) {
+            if (!scene.isOccupiedByOther(scene.network().junctions().get(j), this)) {
                 occupancy.request(j, ID, tick, PATIENCE);
             }
         }
@@ -98,6 +160,8 @@ public final class AutonomousCar implements Bodied, Steppable {
         double turn = command.steering();
         double allowed = Double.isNaN(turn) ? 0 : Math.max(-Dynamics.MAX_TURN, Math.min(Dynamics.MAX_TURN, turn));
         clamped = speed != wanted || allowed != turn;
+        askedSpeed = wanted;
+        askedSteering = turn;
         if (clamped) {
             clampedTicks++;
         }
@@ -153,6 +217,25 @@ public final class AutonomousCar implements Bodied, Steppable {
 
     public long clampedTicks() {
         return clampedTicks;
+    }
+
+    /**
+     * What the world clamped in the last command, e.g. {@code speed asked 3.1000 given 2.5000}
+     * (speeds in metres a tick, steering in degrees, 4 decimals); null when it clamped nothing.
+     */
+    public String clampNote() {
+        if (!clamped) {
+            return null;
+        }
+        StringBuilder note = new StringBuilder();
+        if (askedSpeed != body.speed()) {
+            note.append(String.format(java.util.Locale.ROOT, "speed asked %.4f given %.4f", askedSpeed, body.speed()));
+        }
+        if (askedSteering != steering) {
+            note.append(note.length() == 0 ? "" : "; ").append(String.format(java.util.Locale.ROOT,
+                    "steering asked %.4f given %.4f", askedSteering, steering));
+        }
+        return note.toString();
     }
 
     /** Its footprint grown by {@link Clearance#AROUND_THE_CAR} all round: where traffic keeps out. */

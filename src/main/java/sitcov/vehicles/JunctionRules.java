@@ -14,6 +14,18 @@ public final class JunctionRules {
      * that a car turning through the square, whose corners swing wide, passes clear of it.
      */
     public static final double WAIT_SHORT_OF_SQUARE = 2.5;
+    /**
+     * The car under test may claim a junction only while its front centre is this near the
+     * junction's square (0 inside it): more than the 23.75 m a car needs to stop from full speed, so
+     * a car that slows for a junction can always have asked in time (README, "How the car moves").
+     */
+    public static final double CLAIM_WITHIN = 30;
+    /**
+     * The car under test may hold, and ask for, at most this many junctions at once (after the
+     * command's releases): the one it crosses, the next, and the one after, for squares can be as
+     * little as 2 m apart (experiments/controllers/route_driver.py holds three on such maps).
+     */
+    public static final int MAX_HELD = 3;
 
     private JunctionRules() {
     }

@@ -58,6 +58,16 @@ final class SceneTelemetry implements Telemetry {
     }
 
     @Override
+    public String clampNote() {
+        return scene.autonomousCar().clampNote();
+    }
+
+    @Override
+    public long clampedTicks() {
+        return scene.autonomousCar().clampedTicks();
+    }
+
+    @Override
     public Observation observation() {
         return scene.autonomousCar().observation();
     }

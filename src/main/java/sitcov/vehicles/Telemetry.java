@@ -38,6 +38,12 @@ public interface Telemetry {
     /** Whether this tick's command asked for more than the car's limits. */
     boolean clamped();
 
+    /** What the world clamped in this tick's command (asked and given), or null when nothing. */
+    String clampNote();
+
+    /** How many ticks' commands the world clamped so far in the run. */
+    long clampedTicks();
+
     /**
      * What the world offers the car's controller this tick, whatever controller it is: among the rest,
      * the standard camera's and LIDAR's hits, which a viewer draws (worked out when first asked for).

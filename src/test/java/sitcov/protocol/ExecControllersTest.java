@@ -67,7 +67,7 @@ class ExecControllersTest {
     void aControllerThatExitsMidRunEndsItWithControllerErrorAndItsStderrAndTheNextRunWorks() throws IOException {
         Runs runs = twoRuns("exit", 5000);
         assertEquals(Outcome.CONTROLLER_ERROR, runs.first.record().result().outcome());
-        assertTrue(runs.firstFailure.contains("exited at tick 2"), runs.firstFailure);
+        assertTrue(runs.firstFailure.contains("exited with exit code 3 at tick 2"), runs.firstFailure);
         assertTrue(runs.firstFailure.contains("its stderr ends: giving up at observation 3"), runs.firstFailure);
         assertEquals(Outcome.TARGET_REACHED, runs.second.record().result().outcome());
     }

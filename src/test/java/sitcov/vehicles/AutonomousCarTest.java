@@ -87,19 +87,20 @@ class AutonomousCarTest {
 
     @Test
     void aJunctionAskedForIsGivenOnlyWhenItsSignalSaidSo() {
+        // junction 1, the dead end behind the start, is within the 30 m a claim may be made from
         WorldMap map = Situations.withoutTraffic(Situations.tee());
         boolean[] signalled = new boolean[2];
         Scene scene = scene(map, (now, out) -> {
-            signalled[(int) now.tick()] = now.rightOfWay().wouldGrant(0);
-            out.claim(0);
+            signalled[(int) now.tick()] = now.rightOfWay().wouldGrant(1);
+            out.claim(1);
         });
-        scene.occupancy().request(0, 99, 0, 0);
+        scene.occupancy().request(1, 99, 0, 0);
         scene.state().step();
-        assertFalse(signalled[0], "another vehicle holds junction 0");
-        assertFalse(scene.occupancy().isHeldBy(0, AutonomousCar.ID));
-        scene.occupancy().release(0, 99);
+        assertFalse(signalled[0], "another vehicle holds junction 1");
+        assertFalse(scene.occupancy().isHeldBy(1, AutonomousCar.ID));
+        scene.occupancy().release(1, 99);
         scene.state().step();
         assertTrue(signalled[1]);
-        assertTrue(scene.occupancy().isHeldBy(0, AutonomousCar.ID), "once free it is given");
+        assertTrue(scene.occupancy().isHeldBy(1, AutonomousCar.ID), "once free it is given");
     }
 }

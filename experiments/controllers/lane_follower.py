@@ -12,12 +12,13 @@ it drives straight on through them, and waits at the end of its road for ever (a
     python3 lane_follower.py --bug    the same with a planted bug: above 1.2 m a tick it ignores
                                       the traffic ahead (a variant for the differential oracle)
 
-It reads one JSON message a line on stdin and answers hello and each observation with one line
-on stdout; it exits at the end of its input. Diagnostics go to stderr (sitcov keeps them in a log).
+The protocol (the handshake, the message loop, the tick echo) is sitcov_client.py's: this file is
+the driving. It exits at the end of its input. Diagnostics go to stderr (sitcov keeps them in a log).
 """
-import json
 import math
 import sys
+
+from sitcov_client import serve
 
 CRUISE = 1.5          # metres a tick (27 km/h): modest
 LOOKAHEAD = 6.0       # metres ahead it aims at its lane centre
@@ -100,27 +101,16 @@ def command(obs, target, roads):
 
 
 def main():
-    target, roads = None, []
-    out = sys.stdout
-    for line in sys.stdin:
-        msg = json.loads(line)
-        kind = msg["type"]
-        if kind == "hello":
-            answer = {"type": "hello", "protocol": 1, "name": "lane-follower" + ("-buggy" if BUGGY else ""),
-                      "version": "1", "channels": [], "sensors": ["radar", "obstacles", "camera"]}
-        elif kind == "reset":
-            target, roads = msg["map"]["target"], msg["map"]["roads"]
-            continue
-        elif kind == "observation":
-            answer = command(msg, target, roads)
-        elif kind == "end":
-            print("run ended: %s after %d ticks" % (msg["outcome"], msg["ticks"]), file=sys.stderr)
-            continue
-        else:
-            print("unknown message " + kind, file=sys.stderr)
-            continue
-        out.write(json.dumps(answer) + "\n")
-        out.flush()
+    run = {"target": None, "roads": []}
+
+    def reset(msg):
+        run["target"], run["roads"] = msg["map"]["target"], msg["map"]["roads"]
+
+    def ended(msg):
+        print("run ended: %s after %d ticks" % (msg["outcome"], msg["ticks"]), file=sys.stderr)
+
+    serve(lambda obs: command(obs, run["target"], run["roads"]), name="lane-follower" + ("-buggy" if BUGGY else ""),
+          version="1", channels=[], sensors=["radar", "obstacles", "camera"], reset=reset, end=ended)
 
 
 if __name__ == "__main__":

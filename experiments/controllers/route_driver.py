@@ -56,14 +56,16 @@ It is deterministic: nothing in it is random (there was no choice `internal_seed
 ROUTE_DRIVER_DEBUG=1 in its environment makes it write a line a tick on stderr (the stretch of
 road, the route's next exits, the pass stage, the wanted and measured offset, the speed limit).
 
-It reads one JSON message a line on stdin and answers hello and each observation with one line
-on stdout; it exits at the end of its input. Diagnostics go to stderr (sitcov keeps them in a log).
+The protocol (the handshake, the message loop, the tick echo) is sitcov_client.py's: this file
+is the driving. It exits at the end of its input. Diagnostics go to stderr (sitcov keeps them in
+a log).
 """
 import heapq
-import json
 import math
 import os
 import sys
+
+from sitcov_client import serve
 
 DEBUG = os.environ.get("ROUTE_DRIVER_DEBUG") == "1"   # a line a tick on stderr: what limited the speed
 
@@ -959,26 +961,13 @@ def main():
             print("unknown bug %r; the bugs are %s" % (bug, ", ".join(BUGS)), file=sys.stderr)
             sys.exit(2)
     driver = Driver(bug)
-    out = sys.stdout
-    for line in sys.stdin:
-        msg = json.loads(line)
-        kind = msg["type"]
-        if kind == "hello":
-            answer = {"type": "hello", "protocol": 1, "name": "route-driver" + ("-" + bug if bug else ""),
-                      "version": "1", "channels": [], "sensors": ["radar", "obstacles", "camera"]}
-        elif kind == "reset":
-            driver.reset(msg)
-            continue
-        elif kind == "observation":
-            answer = driver.step(msg)
-        elif kind == "end":
-            print("run ended: %s after %d ticks (camera steered %d ticks)"
-                  % (msg["outcome"], msg["ticks"], driver.camera_used if driver.map else 0), file=sys.stderr)
-            continue
-        else:
-            continue
-        out.write(json.dumps(answer) + "\n")
-        out.flush()
+
+    def ended(msg):
+        print("run ended: %s after %d ticks (camera steered %d ticks)"
+              % (msg["outcome"], msg["ticks"], driver.camera_used if driver.map else 0), file=sys.stderr)
+
+    serve(driver.step, name="route-driver" + ("-" + bug if bug else ""), version="1", channels=[],
+          sensors=["radar", "obstacles", "camera"], reset=driver.reset, end=ended)
 
 
 if __name__ == "__main__":

@@ -49,7 +49,7 @@ final class BenchCommand implements Command {
     /**
      * The trivial controller {@code --protocol} times the protocol with, in Python: it parses every
      * message with the standard json module and answers every observation with one fixed command
-     * (stand still, wheel straight). It asks for no sensor, as a controller that needs none would;
+     * (stand still, wheel straight), echoing the observation's tick (protocol 2). It asks for no sensor, as a controller that needs none would;
      * with {@code --radar} it asks for the radar's tracks and the LIDAR's obstacles, as the builtin car does.
      */
     static final String CONSTANT_CONTROLLER = String.join("\n",
@@ -57,11 +57,12 @@ final class BenchCommand implements Command {
             "sensors = '[\"radar\",\"obstacles\"]' if sys.argv[1:] == ['--radar'] else '[]'",
             "out = sys.stdout",
             "for line in sys.stdin:",
-            "    kind = json.loads(line)['type']",
+            "    msg = json.loads(line)",
+            "    kind = msg['type']",
             "    if kind == 'hello':",
-            "        out.write('{\"type\":\"hello\",\"protocol\":1,\"name\":\"constant\",\"sensors\":' + sensors + '}\\n')",
+            "        out.write('{\"type\":\"hello\",\"protocol\":2,\"name\":\"constant\",\"sensors\":' + sensors + '}\\n')",
             "    elif kind == 'observation':",
-            "        out.write('{\"type\":\"command\",\"speed_change\":0,\"steering\":0}\\n')",
+            "        out.write('{\"type\":\"command\",\"tick\":%d,\"speed_change\":0,\"steering\":0}\\n' % msg['tick'])",
             "    else:",
             "        continue",
             "    out.flush()",

@@ -15,8 +15,9 @@ import sitcov.protocol.ControllerServer;
 import sitcov.protocol.ProtocolException;
 
 /**
- * {@code controller builtin [--faults F]}: the builtin car served over the protocol on stdin and
- * stdout, as an external program would be (README, "Test your own controller"). With
+ * {@code controller builtin [--faults F] [--protocol 1|2]}: the builtin car served over the protocol
+ * on stdin and stdout, as an external program would be (README, "Test your own controller"); it
+ * answers with protocol 2 unless told to speak the deprecated protocol 1. With
  * {@code --controller "exec:java -cp target/classes sitcov.cli.Main controller builtin"} a run gives
  * what the builtin gives in process.
  */
@@ -41,7 +42,7 @@ final class ControllerCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "builtin [--faults SET]";
+        return "builtin [--faults SET] [--protocol 1|2 (default: 2)]";
     }
 
     @Override
@@ -52,13 +53,15 @@ final class ControllerCommand implements Command {
 
     @Override
     public int run(List<String> args, PrintStream ignored, PrintStream err) throws UsageException {
-        Options options = Options.parse(name(), args, Set.of("--faults"), Set.of());
+        Options options = Options.parse(name(), args, Set.of("--faults", "--protocol"), Set.of());
         if (options.positional().size() != 1 || !options.positional().get(0).equals("builtin")) {
             throw new UsageException("controller: say which controller to serve: 'controller builtin'"
                     + " (the only one sitcov has).");
         }
         Set<Fault> faults = options.faults("--faults").orElse(Set.of());
-        ControllerServer server = new ControllerServer(BuiltinCar.FACTORY, "sitcov-builtin", Version.current(), faults);
+        int protocol = options.count("--protocol", 1, 2).orElse(2);
+        ControllerServer server = new ControllerServer(BuiltinCar.FACTORY, "sitcov-builtin", Version.current(), faults,
+                protocol);
         try {
             server.serve(in, out);
         } catch (ProtocolException e) {

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.util.EnumSet;
+import java.util.List;
 import java.util.Set;
 import sitcov.control.Command;
 import sitcov.control.Controller;
@@ -29,15 +30,31 @@ public final class ControllerServer {
     private final String name;
     private final String version;
     private final Set<Fault> extraFaults;
+    private final int newestProtocol;
 
     /**
+     * A server that speaks the newest protocol sitcov offers, up to {@link Wire#PROTOCOL}.
+     *
      * @param extraFaults faults switched on in every run besides those the reset names
      */
     public ControllerServer(ControllerFactory controllers, String name, String version, Set<Fault> extraFaults) {
+        this(controllers, name, version, extraFaults, Wire.PROTOCOL);
+    }
+
+    /**
+     * @param newestProtocol the newest protocol it answers with (1: the deprecated protocol without
+     *                       the tick echo, for checking that runs do not depend on it)
+     */
+    public ControllerServer(ControllerFactory controllers, String name, String version, Set<Fault> extraFaults,
+                            int newestProtocol) {
+        if (!Wire.PROTOCOLS.contains(newestProtocol)) {
+            throw new IllegalArgumentException("protocol " + newestProtocol + "; the protocols are " + Wire.spoken());
+        }
         this.controllers = controllers;
         this.name = name;
         this.version = version;
         this.extraFaults = Set.copyOf(extraFaults);
+        this.newestProtocol = newestProtocol;
     }
 
     /** Serves until the input ends; a message that breaks the protocol ends it with the exception. */
@@ -48,13 +65,9 @@ public final class ControllerServer {
         if (first == null) {
             return;
         }
-        Message hello = Message.parse(first).expect("hello");
-        if (hello.integer("protocol") != Wire.PROTOCOL) {
-            throw new ProtocolException("sitcov speaks protocol " + hello.integer("protocol") + "; this controller speaks "
-                    + Wire.PROTOCOL);
-        }
+        int protocol = protocol(Message.parse(first).expect("hello"));
         // the builtin car works from its own camera and LIDAR on the map, and from the objects its sensors report
-        Wire.controllerHello(w, name, version, Set.of(), Wire.DEFAULT_SENSORS);
+        Wire.controllerHello(w, protocol, name, version, Set.of(), Wire.DEFAULT_SENSORS);
         lines.write(w);
         Run run = null;
         Command command = new Command();
@@ -70,7 +83,7 @@ public final class ControllerServer {
                     run.tick = run.observation.tick();
                     command.clear();
                     run.controller.step(run.observation, command);
-                    Wire.command(w, command, run.activity);
+                    Wire.command(w, protocol >= 2 ? run.tick : -1, command, run.activity);
                     lines.write(w);
                 }
                 case "end" -> {
@@ -82,6 +95,26 @@ public final class ControllerServer {
                 default -> throw new ProtocolException("unknown message type \"" + m.type() + "\"");
             }
         }
+    }
+
+    /**
+     * The newest protocol both speak: sitcov's hello offers its protocols in "protocols" (a sitcov
+     * of protocol 1 only names its one protocol in "protocol").
+     */
+    private int protocol(Message hello) throws ProtocolException {
+        List<Object> offered = hello.has("protocols") ? hello.list("protocols") : List.of(hello.integer("protocol"));
+        int best = 0;
+        for (int i = 0; i < offered.size(); i++) {
+            long p = hello.wholeAt(offered, i, "protocols");
+            if (p >= 1 && p <= newestProtocol && Wire.PROTOCOLS.contains((int) p) && p > best) {
+                best = (int) p;
+            }
+        }
+        if (best == 0) {
+            throw new ProtocolException("sitcov speaks protocols " + offered + "; this controller speaks protocols 1 to "
+                    + newestProtocol);
+        }
+        return best;
     }
 
     /** One run on the controller's side: its controller, the rebuilt observation, its faults. */

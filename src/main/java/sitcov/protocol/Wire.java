@@ -19,12 +19,18 @@ import sitcov.geom.Compass;
 import sitcov.vehicles.Dynamics;
 
 /**
- * The messages of protocol version 1 (README, "Test your own controller", "The protocol"), both
- * ways: what sitcov writes and reads, and what a controller writes and reads. One JSON object a
- * line; every message has a "type".
+ * The messages of the protocol (README, "Test your own controller", "The protocol"), both ways:
+ * what sitcov writes and reads, and what a controller writes and reads. One JSON object a line;
+ * every message has a "type". Protocol 2 is protocol 1 with the tick echoed: each command names
+ * the tick of the observation it answers, so that a command that answers another observation (a
+ * second command written for one observation, read as the answer to the next) is caught the
+ * moment it is read. Protocol 1, without the echo, is still accepted (deprecated).
  */
 final class Wire {
-    static final int PROTOCOL = 1;
+    /** The newest protocol: the one sitcov offers first and the builtin car's server answers with. */
+    static final int PROTOCOL = 2;
+    /** Every protocol sitcov speaks, oldest first: its hello offers them, a controller's hello picks one. */
+    static final List<Integer> PROTOCOLS = List.of(1, 2);
     /**
      * The sensors a controller may ask for at hello, each an observation member sent only to one
      * that asked: the radar's tracks ("traffic"), the LIDAR's parked cars ("obstacles"), the
@@ -39,14 +45,23 @@ final class Wire {
     }
 
     /** What a controller said at hello: who it is and what it wants in each observation. */
-    record Hello(String name, String version, Set<Channel> channels, boolean radar, boolean obstacles, boolean camera,
-                 boolean lidar) {
+    record Hello(int protocol, String name, String version, Set<Channel> channels, boolean radar, boolean obstacles,
+                 boolean camera, boolean lidar) {
+        /** Whether each command must echo its observation's tick (protocol 2 and later). */
+        boolean echoesTicks() {
+            return protocol >= 2;
+        }
     }
 
     // ---- sitcov -> controller
 
     static void sitcovHello(JsonWriter w, String sitcovVersion) {
-        w.reset().beginObject().member("type", "hello").member("protocol", PROTOCOL).member("sitcov", sitcovVersion);
+        w.reset().beginObject().member("type", "hello").member("protocol", PROTOCOL);
+        w.name("protocols").beginArray();
+        for (int p : PROTOCOLS) {
+            w.value(p);
+        }
+        w.endArray().member("sitcov", sitcovVersion);
         w.name("channels").beginArray();
         for (Channel c : Channel.values()) {
             w.value(c.wireName());
@@ -124,12 +139,12 @@ final class Wire {
 
     // ---- controller -> sitcov
 
-    /** A controller's hello, checked: protocol 1, channels and sensors sitcov has. */
+    /** A controller's hello, checked: a protocol sitcov speaks, channels and sensors sitcov has. */
     static Hello controllerHello(Message m) throws ProtocolException {
         m.expect("hello");
         long protocol = m.integer("protocol");
-        if (protocol != PROTOCOL) {
-            throw new ProtocolException("it speaks protocol " + protocol + "; this sitcov speaks protocol " + PROTOCOL);
+        if (protocol != (int) protocol || !PROTOCOLS.contains((int) protocol)) {
+            throw new ProtocolException("it speaks protocol " + protocol + "; this sitcov speaks protocols " + spoken());
         }
         Set<Channel> channels = EnumSet.noneOf(Channel.class);
         List<Object> asked = m.optionalList("channels");
@@ -150,8 +165,17 @@ final class Wire {
         }
         String name = m.has("name") ? m.text("name") : "unnamed";
         String version = m.has("version") ? m.text("version") : "";
-        return new Hello(name, version, channels, sensors.contains("radar"), sensors.contains("obstacles"),
+        return new Hello((int) protocol, name, version, channels, sensors.contains("radar"), sensors.contains("obstacles"),
                 sensors.contains("camera"), sensors.contains("lidar"));
+    }
+
+    /** "1 and 2". */
+    static String spoken() {
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < PROTOCOLS.size(); i++) {
+            b.append(i == 0 ? "" : i == PROTOCOLS.size() - 1 ? " and " : ", ").append(PROTOCOLS.get(i));
+        }
+        return b.toString();
     }
 
     private static List<String> channelNames() {
@@ -163,11 +187,18 @@ final class Wire {
     }
 
     /**
-     * Reads a command into {@code out} (cleared), and reports its fault activations into
-     * {@code faults}: ids it reached this tick, and how many times each was effective.
+     * Reads the command that answers the observation of {@code tick} into {@code out} (cleared), and
+     * reports its fault activations into {@code faults}: ids it reached this tick, and how many times
+     * each was effective. With {@code echoesTicks} (protocol 2) the command must name {@code tick};
+     * it is checked before anything of the command is taken, so that a command meant for another
+     * observation changes nothing.
      */
-    static void command(Message m, Command out, FaultSwitchboard faults) throws ProtocolException {
+    static void command(Message m, long tick, boolean echoesTicks, Command out, FaultSwitchboard faults)
+            throws ProtocolException {
         m.expect("command");
+        if (echoesTicks) {
+            checkTick(m, tick);
+        }
         // a speed asked for outright moves the car to the bit; otherwise the change is added to the speed
         if (m.has("speed")) {
             out.speed(m.number("speed"));
@@ -214,6 +245,20 @@ final class Wire {
         }
     }
 
+    /** A protocol-2 command's tick: present, whole, and the observation's. */
+    private static void checkTick(Message m, long tick) throws ProtocolException {
+        if (!m.has("tick")) {
+            throw new ProtocolException("command.tick is missing: with protocol 2 a command echoes the tick of the"
+                    + " observation it answers (" + tick + ")");
+        }
+        long answered = m.integer("tick");
+        if (answered != tick) {
+            throw new ProtocolException("the command answers tick " + answered + ", the observation was tick " + tick
+                    + (answered < tick ? " (a command written for an earlier observation: each observation gets"
+                    + " exactly one command)" : ""));
+        }
+    }
+
     private static int junctionId(long id) throws ProtocolException {
         if (id < 0 || id > Integer.MAX_VALUE) {
             throw new ProtocolException("a junction id must be 0 or more, got " + id);
@@ -243,8 +288,9 @@ final class Wire {
 
     // ---- controller side: what a controller writes
 
-    static void controllerHello(JsonWriter w, String name, String version, Set<Channel> channels, List<String> sensors) {
-        w.reset().beginObject().member("type", "hello").member("protocol", PROTOCOL).member("name", name)
+    static void controllerHello(JsonWriter w, int protocol, String name, String version, Set<Channel> channels,
+                                List<String> sensors) {
+        w.reset().beginObject().member("type", "hello").member("protocol", protocol).member("name", name)
                 .member("version", version);
         w.name("channels").beginArray();
         for (Channel c : channels) {
@@ -257,9 +303,15 @@ final class Wire {
         w.endArray().endObject();
     }
 
-    /** A command, with the fault activations since the last one ({@code activity}). */
-    static void command(JsonWriter w, Command c, FaultActivity activity) {
+    /**
+     * A command, with the fault activations since the last one ({@code activity}); with protocol 2
+     * it names the tick it answers ({@code tick}; protocol 1: pass a negative tick, none is written).
+     */
+    static void command(JsonWriter w, long tick, Command c, FaultActivity activity) {
         w.reset().beginObject().member("type", "command");
+        if (tick >= 0) {
+            w.member("tick", tick);
+        }
         if (Double.isNaN(c.speed())) {
             w.member("speed_change", c.speedChange());
         } else {

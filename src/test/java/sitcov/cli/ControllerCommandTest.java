@@ -31,6 +31,29 @@ class ControllerCommandTest {
     }
 
     @Test
+    void theBuiltinAnswersSitcovsOfferWithProtocol2UnlessToldToSpeakProtocol1() throws UsageException {
+        String offer = "{\"type\":\"hello\",\"protocol\":2,\"protocols\":[1,2],\"sitcov\":\"test\"}\n"
+                + "{\"type\":\"reset\",\"map\":{\"seed\":1,\"roads\":[{\"id\":0,\"axis\":\"east_west\",\"centre\":0,"
+                + "\"from\":0,\"to\":100}],\"junctions\":[],\"target\":{\"x\":90,\"y\":-1.5,\"road\":0},"
+                + "\"start\":{\"x\":10,\"y\":-1.5,\"heading\":90}},\"internal_seed\":1,\"faults\":[]}\n"
+                + "{\"type\":\"observation\",\"tick\":0,\"x\":10,\"y\":-1.5,\"heading\":90,\"speed\":0,"
+                + "\"traffic\":[],\"obstacles\":[],\"junctions\":[]}\n";
+        for (String protocol : List.of("2", "1")) {
+            ByteArrayOutputStream out = new ByteArrayOutputStream();
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            ControllerCommand command = new ControllerCommand(new ByteArrayInputStream(offer.getBytes(StandardCharsets.UTF_8)),
+                    out);
+            int code = command.run(List.of("builtin", "--protocol", protocol), null,
+                    new PrintStream(err, true, StandardCharsets.UTF_8));
+            assertEquals(ExitCode.OK, code, err.toString(StandardCharsets.UTF_8));
+            String[] answers = out.toString(StandardCharsets.UTF_8).split("\n");
+            assertTrue(answers[0].startsWith("{\"type\":\"hello\",\"protocol\":" + protocol + ","), answers[0]);
+            String tick = protocol.equals("2") ? "\"tick\":0," : "";
+            assertTrue(answers[1].startsWith("{\"type\":\"command\"," + tick + "\"speed"), answers[1]);
+        }
+    }
+
+    @Test
     void aControllerOtherThanBuiltinIsAUsageError() {
         CliRunner result = CliRunner.run("controller", "mine");
         assertEquals(ExitCode.USAGE, result.exitCode());

@@ -21,7 +21,8 @@ import sitcov.world.WorldMap;
  * Misbehaving controllers never hang or break a run: a controller that sleeps past the per-tick
  * timeout, exits mid-run or writes garbage ends its run with its outcome and the reason, and the
  * next run gets a fresh process that works; one that fails the handshake is refused with a message
- * naming its command. The controllers are small shell scripts: the first process of each
+ * naming its command. The controllers are small shell scripts speaking the deprecated protocol 1
+ * (still accepted; protocol 2's tick echo is tested in {@link TickEchoTest}): the first process of each
  * misbehaves at its third observation, the ones after it (a marker file tells them apart) answer
  * every observation with full throttle straight on, which takes the car to the Target on the
  * straight road.
@@ -91,11 +92,11 @@ class ExecControllersTest {
 
     @Test
     void aControllerOfAnotherProtocolFailsTheHandshakeWithAMessageNamingItsCommand() throws IOException {
-        Path script = write("other.sh", "read hello\necho '{\"type\":\"hello\",\"protocol\":2}'\nread rest\n");
+        Path script = write("other.sh", "read hello\necho '{\"type\":\"hello\",\"protocol\":3}'\nread rest\n");
         ExecControllers controllers = new ExecControllers(List.of("sh", script.toString()), "test");
         ControllerStartException refused = assertThrows(ControllerStartException.class, () -> controllers.check(null));
-        assertEquals("controller `sh " + script + "` failed the handshake: it speaks protocol 2; this sitcov speaks"
-                + " protocol 1", refused.getMessage());
+        assertEquals("controller `sh " + script + "` failed the handshake: it speaks protocol 3; this sitcov speaks"
+                + " protocols 1 and 2", refused.getMessage());
     }
 
     @Test

@@ -19,12 +19,15 @@ import sitcov.world.Situations;
 import sitcov.world.WorldMap;
 
 /**
- * The Python example of experiments/controllers drives over the protocol: on the straight road it
- * keeps its lane to the Target, and it stops behind a parked car in its lane rather than hit it.
+ * The Python examples of experiments/controllers drive over the protocol (protocol 2, through
+ * sitcov_client.py): on the straight road the lane follower keeps its lane to the Target, and it
+ * stops behind a parked car in its lane rather than hit it; the twenty-line minimal.py keeps its
+ * lane to the Target too.
  * Needs python3, which CI's machine has: skipped with a message elsewhere, failed under CI=true.
  */
 class LaneFollowerExampleTest {
     private static final String SCRIPT = "experiments/controllers/lane_follower.py";
+    private static final String MINIMAL = "experiments/controllers/minimal.py";
 
     @BeforeAll
     static void needsPython() {
@@ -53,8 +56,19 @@ class LaneFollowerExampleTest {
                 "only the TIMEOUT: " + run.result().accidents());
     }
 
+    @Test
+    void theMinimalControllerKeepsItsLaneToTheTargetOnTheStraightRoad() {
+        RunRecord run = drive(Situations.withoutTraffic(Situations.straight(List.of())), MINIMAL);
+        assertEquals(Outcome.TARGET_REACHED, run.result().outcome());
+        assertEquals(List.of(), run.result().accidents());
+    }
+
     private static RunRecord drive(WorldMap map) {
-        try (ExecControllers controllers = new ExecControllers(List.of("python3", SCRIPT), "test")) {
+        return drive(map, SCRIPT);
+    }
+
+    private static RunRecord drive(WorldMap map, String script) {
+        try (ExecControllers controllers = new ExecControllers(List.of("python3", script), "test")) {
             return Simulator.run(map, 1, Set.of(), RunObserver.NONE, controllers.worker(null));
         }
     }

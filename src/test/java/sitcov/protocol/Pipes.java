@@ -1,6 +1,8 @@
 package sitcov.protocol;
 
 import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
 import java.io.PipedInputStream;
 import java.io.PipedOutputStream;
 import java.io.UncheckedIOException;
@@ -8,17 +10,34 @@ import java.util.Set;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 
-/** A {@link ControllerServer} on a thread of its own, connected to sitcov's side by pipes: the protocol without a process. */
+/** A controller on a thread of its own, connected to sitcov's side by pipes: the protocol without a process. */
 final class Pipes {
     private Pipes() {
     }
 
-    /** A worker's factory whose controller is {@code served}, served over the protocol in process. */
-    static ProxyFactory serving(ControllerFactory served, Set<Fault> extraFaults) {
-        return new ProxyFactory(() -> connect(served, extraFaults), 60_000);
+    /** The controller's side: reads sitcov's messages from {@code in}, writes its own to {@code out}. */
+    @FunctionalInterface
+    interface Peer {
+        void serve(InputStream in, OutputStream out) throws IOException, ProtocolException;
     }
 
-    private static Session connect(ControllerFactory served, Set<Fault> extraFaults) throws ControllerStartException {
+    /** A worker's factory whose controller is {@code served}, served over the newest protocol in process. */
+    static ProxyFactory serving(ControllerFactory served, Set<Fault> extraFaults) {
+        return serving(served, extraFaults, Wire.PROTOCOL);
+    }
+
+    /** The same, the server answering with at most protocol {@code newestProtocol}. */
+    static ProxyFactory serving(ControllerFactory served, Set<Fault> extraFaults, int newestProtocol) {
+        return connecting((in, out) -> new ControllerServer(served, "in-process", "test", extraFaults, newestProtocol)
+                .serve(in, out));
+    }
+
+    /** A worker's factory whose controller is {@code peer}, started afresh on a thread for every connection. */
+    static ProxyFactory connecting(Peer peer) {
+        return new ProxyFactory(() -> connect(peer), 60_000);
+    }
+
+    private static Session connect(Peer peer) throws ControllerStartException {
         try {
             PipedOutputStream toServer = new PipedOutputStream();
             PipedInputStream serverIn = new PipedInputStream(toServer, 1 << 16);
@@ -26,11 +45,11 @@ final class Pipes {
             PipedInputStream sitcovIn = new PipedInputStream(toSitcov, 1 << 16);
             Thread server = new Thread(() -> {
                 try (toSitcov) {
-                    new ControllerServer(served, "in-process", "test", extraFaults).serve(serverIn, toSitcov);
+                    peer.serve(serverIn, toSitcov);
                 } catch (IOException | ProtocolException e) {
                     throw new IllegalStateException(e);
                 }
-            }, "controller-server");
+            }, "controller-peer");
             server.setDaemon(true);
             server.start();
             Runnable close = () -> {

@@ -11,7 +11,7 @@ import java.util.Optional;
 public enum Channel {
     /** Metres from the lane's centre line to the car's front centre, positive to the right. */
     LANE_OFFSET("lane_offset"),
-    /** Degrees from the lane's direction to the car's heading, in (−180, 180], positive clockwise on the map's bearings. */
+    /** Degrees from the lane's direction to the car's heading, in (−180, 180], positive towards larger bearings (a turn to the left, as steering). */
     HEADING_ERROR("heading_error"),
     /** Metres along the lane from the car's front to the next junction's square ahead; NaN when none. */
     DISTANCE_TO_JUNCTION("distance_to_junction"),

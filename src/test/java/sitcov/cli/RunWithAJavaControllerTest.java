@@ -30,7 +30,7 @@ class RunWithAJavaControllerTest {
         public void step(Observation now, Command out) {
             double offset = now.channel(Channel.LANE_OFFSET);
             double error = now.channel(Channel.HEADING_ERROR);
-            out.speed(0.6).steering(Double.isNaN(offset) ? 0 : -error - 8 * offset);
+            out.speed(0.6).steering(Double.isNaN(offset) ? 0 : -error + 8 * offset);
         }
     }
 

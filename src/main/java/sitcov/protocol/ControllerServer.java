@@ -67,7 +67,7 @@ public final class ControllerServer {
         }
         int protocol = protocol(Message.parse(first).expect("hello"));
         // the builtin car works from its own camera and LIDAR on the map, and from the objects its sensors report
-        Wire.controllerHello(w, protocol, name, version, Set.of(), Wire.DEFAULT_SENSORS);
+        Wire.controllerHello(w, protocol, name, version, Set.of(), Wire.DEFAULT_SENSORS, true);
         lines.write(w);
         Run run = null;
         Command command = new Command();

@@ -33,7 +33,8 @@ final class ProxyController implements Controller {
     public void step(Observation now, Command out) {
         String line = session.step(now, tickTimeoutMillis);
         try {
-            Wire.command(Message.parse(line), now.tick(), session.hello().echoesTicks(), out, faults);
+            Wire.command(Message.parse(line), now.tick(), session.hello().echoesTicks(), session.hello().seededFaults(), out,
+                    faults);
         } catch (ProtocolException e) {
             throw session.error("at tick " + now.tick() + " it wrote " + Message.shorten(line) + ": " + e.getMessage());
         }

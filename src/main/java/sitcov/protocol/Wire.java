@@ -46,7 +46,13 @@ final class Wire {
 
     /** What a controller said at hello: who it is and what it wants in each observation. */
     record Hello(int protocol, String name, String version, Set<Channel> channels, boolean radar, boolean obstacles,
-                 boolean camera, boolean lidar) {
+                 boolean camera, boolean lidar, boolean seededFaults) {
+        /** A controller that has none of sitcov's seeded faults: it may report no fault activation. */
+        Hello(int protocol, String name, String version, Set<Channel> channels, boolean radar, boolean obstacles,
+              boolean camera, boolean lidar) {
+            this(protocol, name, version, channels, radar, obstacles, camera, lidar, false);
+        }
+
         /** Whether each command must echo its observation's tick (protocol 2 and later). */
         boolean echoesTicks() {
             return protocol >= 2;
@@ -166,7 +172,7 @@ final class Wire {
         String name = m.has("name") ? m.text("name") : "unnamed";
         String version = m.has("version") ? m.text("version") : "";
         return new Hello((int) protocol, name, version, channels, sensors.contains("radar"), sensors.contains("obstacles"),
-                sensors.contains("camera"), sensors.contains("lidar"));
+                sensors.contains("camera"), sensors.contains("lidar"), m.optionalFlag("faults"));
     }
 
     /** "1 and 2". */
@@ -195,6 +201,15 @@ final class Wire {
      */
     static void command(Message m, long tick, boolean echoesTicks, Command out, FaultSwitchboard faults)
             throws ProtocolException {
+        command(m, tick, echoesTicks, true, out, faults);
+    }
+
+    /**
+     * As above, for a controller that said at hello whether it has sitcov's seeded faults
+     * ({@code seededFaults}): one that did not may report no fault activation.
+     */
+    static void command(Message m, long tick, boolean echoesTicks, boolean seededFaults, Command out,
+                        FaultSwitchboard faults) throws ProtocolException {
         m.expect("command");
         if (echoesTicks) {
             checkTick(m, tick);
@@ -224,6 +239,11 @@ final class Wire {
             report.lane(lane == null ? null : compass(lane, "command.report.lane"));
         }
         if (m.has("faults")) {
+            if (!seededFaults) {
+                throw new ProtocolException("it reported fault activations, but its hello did not say it has sitcov's"
+                        + " seeded faults (\"faults\": true); only such a controller, like the builtin car served by"
+                        + " 'controller builtin', may report them");
+            }
             Message f = m.object("faults");
             List<Object> reached = f.optionalList("reached");
             for (int i = 0; i < reached.size(); i++) {
@@ -290,8 +310,17 @@ final class Wire {
 
     static void controllerHello(JsonWriter w, int protocol, String name, String version, Set<Channel> channels,
                                 List<String> sensors) {
+        controllerHello(w, protocol, name, version, channels, sensors, false);
+    }
+
+    /** A hello that says, with {@code seededFaults}, that the controller has sitcov's seeded faults and reports them. */
+    static void controllerHello(JsonWriter w, int protocol, String name, String version, Set<Channel> channels,
+                                List<String> sensors, boolean seededFaults) {
         w.reset().beginObject().member("type", "hello").member("protocol", protocol).member("name", name)
                 .member("version", version);
+        if (seededFaults) {
+            w.member("faults", true);
+        }
         w.name("channels").beginArray();
         for (Channel c : channels) {
             w.value(c.wireName());

@@ -52,6 +52,17 @@ class TickEchoTest {
     }
 
     @Test
+    void aFaultReportFromAControllerThatHasNoSeededFaultsIsAControllerError() {
+        LiveRun run = runToEnd(2, tick -> tick == 5
+                ? "{\"type\":\"command\",\"tick\":5,\"speed_change\":0.1,\"steering\":0,\"faults\":{\"reached\":[3]}}\n"
+                : command(tick));
+        assertEquals(Outcome.CONTROLLER_ERROR, run.record().result().outcome());
+        assertEquals(6, run.record().result().ticks(), "it failed in tick 5, the sixth");
+        assertTrue(failure(run).contains("it reported fault activations, but its hello did not say it has sitcov's seeded"
+                + " faults"), failure(run));
+    }
+
+    @Test
     void aCommandForAnotherTickIsAControllerErrorNamingBothTicks() {
         LiveRun run = runToEnd(2, tick -> command(tick == 42 ? 41 : tick));
         assertEquals(Outcome.CONTROLLER_ERROR, run.record().result().outcome());

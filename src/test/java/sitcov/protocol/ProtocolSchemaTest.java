@@ -143,7 +143,7 @@ class ProtocolSchemaTest {
                 cases.add(new Case(def, line, "an answer of protocol " + answer[1]));
             }
             if (m.type().equals("hello")) {
-                assertEquals(answer[1], (int) Wire.controllerHello(m).protocol(), line);
+                assertEquals(answer[1], Wire.controllerHello(m).protocol(), line);
             } else {
                 commands++;
                 Wire.command(m, two ? m.integer("tick") : TICK, two, new Command(), switchboard());

@@ -47,6 +47,14 @@ class RunWithAJavaControllerTest {
         }
     }
 
+    /** Asks for more than the car can do every tick: 3 m a tick, where the world gives at most 2.5. */
+    static final class Speeder implements Controller {
+        @Override
+        public void step(Observation now, Command out) {
+            out.speed(3).steering(0);
+        }
+    }
+
     /** Fails to answer on its first tick, as a controller that gives no command in time does. */
     static final class NeverAnswers implements Controller {
         @Override
@@ -60,6 +68,7 @@ class RunWithAJavaControllerTest {
         JavaControllers.register("test-lane-keeper", run -> new LaneKeeper());
         JavaControllers.register("test-crashes-at-20", run -> new CrashesAtTwenty());
         JavaControllers.register("test-never-answers", run -> new NeverAnswers());
+        JavaControllers.register("test-speeder", run -> new Speeder());
     }
 
     private static Path preset(Path dir, String extra) throws IOException {
@@ -218,6 +227,24 @@ class RunWithAJavaControllerTest {
         assertTrue(r.out().matches("(?s).*CONTROLLER_TIMEOUT +3 +100\\.0%.*"), r.out());
         assertTrue(r.out().contains("Seeds where the controller failed: 1, 2, 3"), r.out());
         assertTrue(r.out().contains("--controller 'java:test-never-answers'"), "Reproduce keeps the controller: " + r.out());
+    }
+
+    @Test
+    void everyTickWhoseCommandTheWorldClampedIsCountedInRunsCsv(@TempDir Path dir) throws IOException {
+        Path out = dir.resolve("out");
+        Path p = dir.resolve("speeder.properties");
+        Files.writeString(p, "master_seed=3\ncandidates=2\nreplications=1\nbudget=ticks\ndrivers=random\n"
+                + "grid=experiments/paper-grid.txt\ncontroller=java:test-speeder\n");
+        CliRunner r = CliRunner.run("run", p.toString(), "--out", out.toString(), "--threads", "1");
+        assertEquals(ExitCode.OK, r.exitCode(), r.err());
+        List<String> rows = rows(out);
+        List<String> header = List.of(rows.get(0).split(","));
+        assertTrue(rows.size() > 1, "a map was judged");
+        for (String line : rows.subList(1, rows.size())) {
+            String[] c = line.split(",", -1);
+            // it asks for 3 m a tick on every tick, and the world never gives more than 2.5
+            assertEquals(c[header.indexOf("ticks")], c[header.indexOf("clamped_ticks")], line);
+        }
     }
 
     @Test

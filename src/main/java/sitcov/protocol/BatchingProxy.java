@@ -192,19 +192,21 @@ public final class BatchingProxy implements AutoCloseable {
             return true;
         }
 
-        synchronized Message step(int slot, Observation now) {
-            if (failure != null) {
-                throw failure;
-            }
+        /** Waits, parked outside the lock, until the batch of this run's observation is answered. */
+        Message step(int slot, Observation now) {
             Waiting w = new Waiting(slot, now);
-            waiting.add(w);
-            if (waiting.size() >= liveCount) {
-                send();
+            synchronized (this) {
+                if (failure != null) {
+                    throw failure;
+                }
+                waiting.add(w);
+                if (waiting.size() >= liveCount) {
+                    send();
+                }
             }
-            while (w.command == null && w.failure == null) {
-                try {
-                    wait();
-                } catch (InterruptedException e) {
+            while (!w.done) {
+                java.util.concurrent.locks.LockSupport.park(this);
+                if (Thread.interrupted()) {
                     Thread.currentThread().interrupt();
                     throw new ControllerFailure(ControllerFailure.Kind.ERROR, "interrupted while waiting for a command");
                 }
@@ -274,15 +276,14 @@ public final class BatchingProxy implements AutoCloseable {
                     }
                 }
                 for (int i = 0; i < batch.size(); i++) {
-                    batch.get(i).command = commands.get(i);
+                    batch.get(i).answer(commands.get(i), null);
                 }
             } catch (ControllerFailure f) {
                 failure = f;
                 for (Waiting w : batch) {
-                    w.failure = f;
+                    w.answer(null, f);
                 }
             }
-            notifyAll();
         }
 
         /** The controller broke the protocol: it is killed, and every run of the batch fails with the reason. */
@@ -290,10 +291,9 @@ public final class BatchingProxy implements AutoCloseable {
             ControllerFailure f = session.error(why);
             failure = f;
             for (Waiting w : waiting) {
-                w.failure = f;
+                w.answer(null, f);
             }
             waiting.clear();
-            notifyAll();
             return f;
         }
     }
@@ -301,12 +301,27 @@ public final class BatchingProxy implements AutoCloseable {
     private static final class Waiting {
         final int slot;
         final Observation now;
+        final Thread thread = Thread.currentThread();
         Message command;
         ControllerFailure failure;
+        volatile boolean done;
 
         Waiting(int slot, Observation now) {
             this.slot = slot;
             this.now = now;
+        }
+
+        /** Hands the run its command, or the failure, and wakes it (when it is not the thread answering). */
+        void answer(Message command, ControllerFailure failure) {
+            if (done) {
+                return;
+            }
+            this.command = command;
+            this.failure = failure;
+            done = true;
+            if (thread != Thread.currentThread()) {
+                java.util.concurrent.locks.LockSupport.unpark(thread);
+            }
         }
     }
 }

@@ -59,8 +59,12 @@ def serve(step=None, name="controller", version="1", channels=(), sensors=("rada
     channels, sensors: what every observation should carry (README, "The protocol").
     batch: the most runs it takes in one message (1: one run at a time).
     step_batch(observations) -> list of command dicts, optional: answers a batch at once (else
-    step is called for each observation).
+    step is called for each observation); without step, it answers single observations too.
     """
+    if step is None:
+        if step_batch is None:
+            raise ValueError("serve needs step or step_batch")
+        step = lambda observation: step_batch([observation])[0]   # one run at a time: a batch of one
     stdin = sys.stdin if stdin is None else stdin
     stdout = sys.stdout if stdout is None else stdout
     protocol = None

@@ -78,7 +78,8 @@ final class SimulateCommand implements Command {
                 Set.of("--summary"));
         options.noPositional();
         try (ControllerChoice.Workers controllers = controllers(options, err)) {
-            ControllerFactory factory = controllers.worker(options.outputFile("--controller-log").orElse(null));
+            Path log = options.outputFile("--controller-log").orElse(null);
+            ControllerFactory factory = controllers.worker(log);
             if (options.has("--batch")) {
                 int batch = options.count("--batch", 1, MAX_BATCH).orElseThrow();
                 if (!options.has("--maps")) {
@@ -86,7 +87,7 @@ final class SimulateCommand implements Command {
                 }
                 BatchingProxy proxy;
                 try {
-                    proxy = controllers.batched(options.outputFile("--controller-log").orElse(null), batch);
+                    proxy = controllers.batched(log, batch);
                 } catch (ControllerStartException e) {
                     throw new UsageException("simulate: " + e.getMessage() + "; fix the command given to --controller.");
                 }

@@ -36,6 +36,12 @@ The command your function returns is a dict with the members of the protocol's c
 "speed_change" (metres a tick, added to the speed) or "speed" (the speed itself), "steering"
 (degrees, + towards larger bearings), and optionally "claim" and "release" (junction ids) and
 "report". The observation is the protocol's observation as a dict, "tick" included.
+
+Batches: serve(step, batch=B) tells sitcov it takes up to B runs in one message (sitcov's
+'simulate --maps N --batch B'); step is still called once per observation, each of which then
+carries "run" (its run's slot, 0..B-1; resets and ends carry it too), so keep any state per run.
+A vectorised controller passes step_batch(observations) -> list of commands, in the same order,
+instead of step. Without batch (or batch=1) nothing changes.
 """
 import json
 import sys
@@ -43,15 +49,22 @@ import sys
 PROTOCOLS = (2, 1)   # the protocols this client speaks, the one it prefers first
 
 
-def serve(step, name="controller", version="1", channels=(), sensors=("radar", "obstacles"),
-          reset=None, end=None, stdin=None, stdout=None):
+def serve(step=None, name="controller", version="1", channels=(), sensors=("radar", "obstacles"),
+          reset=None, end=None, stdin=None, stdout=None, batch=1, step_batch=None):
     """Serves a controller over the protocol until the end of the input.
 
     step(observation) -> command dict, called once for every observation.
     reset(message), optional: called with each run's reset (the map, "internal_seed", "faults").
     end(message), optional: called with each run's end ("outcome", "ticks").
     channels, sensors: what every observation should carry (README, "The protocol").
+    batch: the most runs it takes in one message (1: one run at a time).
+    step_batch(observations) -> list of command dicts, optional: answers a batch at once (else
+    step is called for each observation); without step, it answers single observations too.
     """
+    if step is None:
+        if step_batch is None:
+            raise ValueError("serve needs step or step_batch")
+        step = lambda observation: step_batch([observation])[0]   # one run at a time: a batch of one
     stdin = sys.stdin if stdin is None else stdin
     stdout = sys.stdout if stdout is None else stdout
     protocol = None
@@ -62,9 +75,20 @@ def serve(step, name="controller", version="1", channels=(), sensors=("radar", "
             protocol = choose_protocol(msg)
             answer = {"type": "hello", "protocol": protocol, "name": name, "version": version,
                       "channels": list(channels), "sensors": list(sensors)}
+            if batch > 1 and protocol >= 2:
+                answer["batch"] = batch
         elif kind == "observation":
             answer = {"type": "command", "tick": msg["tick"]} if protocol >= 2 else {"type": "command"}
             answer.update(step(msg))
+        elif kind == "observations":
+            items = msg["items"]
+            commands = step_batch(items) if step_batch is not None else [step(o) for o in items]
+            answers = []
+            for o, c in zip(items, commands):
+                a = {"type": "command", "tick": o["tick"], "run": o["run"]}
+                a.update(c)
+                answers.append(a)
+            answer = {"type": "commands", "items": answers}
         elif kind == "reset":
             if reset is not None:
                 reset(msg)

@@ -17,6 +17,7 @@ import sitcov.judge.MapRunner;
 import sitcov.judge.RunObserver;
 import sitcov.judge.Simulator;
 import sitcov.oracle.RunResult;
+import sitcov.protocol.BatchingProxy;
 import sitcov.protocol.ControllerStartException;
 import sitcov.protocol.ExecControllers;
 import sitcov.world.Layout;
@@ -46,6 +47,8 @@ final class BenchCommand implements Command {
     static final int DEFAULT_PROTOCOL_MAPS = 12;
     /** Runs over the protocol before the timing: fewer leave the JIT compiling during it. */
     private static final int PROTOCOL_WARM_UP_RUNS = 3;
+    /** The batches --protocol times side by side (batched lockstep; 1 is one run at a time). */
+    private static final int[] BATCHES = {1, 8, 32};
     /**
      * The trivial controller {@code --protocol} times the protocol with, in Python: it parses every
      * message with the standard json module and answers every observation with one fixed command
@@ -60,9 +63,12 @@ final class BenchCommand implements Command {
             "    msg = json.loads(line)",
             "    kind = msg['type']",
             "    if kind == 'hello':",
-            "        out.write('{\"type\":\"hello\",\"protocol\":2,\"name\":\"constant\",\"sensors\":' + sensors + '}\\n')",
+            "        out.write('{\"type\":\"hello\",\"protocol\":2,\"name\":\"constant\",\"batch\":64,\"sensors\":' + sensors + '}\\n')",
             "    elif kind == 'observation':",
             "        out.write('{\"type\":\"command\",\"tick\":%d,\"speed_change\":0,\"steering\":0}\\n' % msg['tick'])",
+            "    elif kind == 'observations':",
+            "        out.write('{\"type\":\"commands\",\"items\":[' + ','.join('{\"type\":\"command\",\"tick\":%d,\"run\":%d,"
+                    + "\"speed_change\":0,\"steering\":0}' % (o['tick'], o['run']) for o in msg['items']) + ']}\\n')",
             "    else:",
             "        continue",
             "    out.flush()",
@@ -255,6 +261,18 @@ final class BenchCommand implements Command {
             cpuLine(out, "  CPU a tick, sitcov + controller", lean.cpuMicrosPerTick());
             protocolLine(out, "protocol ticks per second, radar+obstacles", radar.perSecond(), "the builtin car's sensors");
             cpuLine(out, "  CPU a tick, sitcov + controller", radar.cpuMicrosPerTick());
+            double[] batched = new double[BATCHES.length];
+            for (int b = 0; b < BATCHES.length; b++) {
+                // batch 1 timed again here, the JIT as warm as for the others
+                batched[b] = BATCHES[b] == 1 ? protocolTicksPerSecond(List.of("python3", script.toString()), maps, err)
+                        .perSecond() : batchedTicksPerSecond(List.of("python3", script.toString()), maps, BATCHES[b], err);
+            }
+            out.println();
+            out.printf(Locale.ROOT, "Batched lockstep, no sensors (B runs a round trip, max(K, B) runs):%n");
+            for (int b = 0; b < BATCHES.length; b++) {
+                out.printf(Locale.ROOT, "  batch %d: %.0f ticks a second%s%n", BATCHES[b], batched[b],
+                        b == 0 ? "" : String.format(Locale.ROOT, "  (%.1f x batch 1)", batched[b] / batched[0]));
+            }
             out.println();
             out.printf(Locale.ROOT, "Runs: maps 1..%d each, the car standing at its start (5000 ticks a run) while the traffic"
                     + " moves round it. Both processes on one core: taskset -c 0 sitcov bench --protocol%n", maps);
@@ -276,6 +294,34 @@ final class BenchCommand implements Command {
     private static void protocolLine(PrintStream out, String label, double perSecond, String target) {
         out.println(String.format(Locale.ROOT, "  %-44s %12.0f   %s  (%.1f µs a tick)", label, perSecond, target,
                 1e6 / perSecond));
+    }
+
+    /** Protocol ticks a second with runs stepped {@code batch} at a time over one process: max(maps, batch) runs. */
+    private static double batchedTicksPerSecond(List<String> command, int maps, int batch, PrintStream err)
+            throws UsageException {
+        try (ExecControllers controllers = new ExecControllers(command, Version.current());
+             BatchingProxy proxy = controllers.batched(null, batch)) {
+            int runs = Math.max(maps, batch);
+            err.println("bench: the trivial controller, batch " + proxy.batch() + ": warming up (" + batch + " runs), then "
+                    + runs + " runs ...");
+            for (long t : proxy.runAll(batch, (i, f) -> {
+                WorldMap map = MapGenerator.generate(WARM_UP_SEED + i);
+                return Simulator.run(map, map.seed(), Set.of(), RunObserver.NONE, f).result().ticks();
+            })) {
+                sink += t;
+            }
+            long start = System.nanoTime();
+            long ticks = 0;
+            for (long t : proxy.runAll(runs, (i, f) -> Simulator.run(MapGenerator.generate(i + 1), i + 1, Set.of(),
+                    RunObserver.NONE, f).result().ticks())) {
+                ticks += t;
+            }
+            long nanos = System.nanoTime() - start;
+            sink += ticks;
+            return ticks / (nanos / 1e9);
+        } catch (ControllerStartException e) {
+            throw new UsageException("bench: --protocol needs python3 on the PATH: " + e.getMessage() + ".");
+        }
     }
 
     private static ProtocolTiming protocolTicksPerSecond(List<String> command, int maps, PrintStream err)

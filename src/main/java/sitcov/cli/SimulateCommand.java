@@ -22,6 +22,7 @@ import sitcov.oracle.Margins;
 import sitcov.oracle.NearMiss;
 import sitcov.oracle.NearMisses;
 import sitcov.oracle.RunResult;
+import sitcov.protocol.BatchingProxy;
 import sitcov.protocol.ControllerChoice;
 import sitcov.protocol.ControllerStartException;
 import sitcov.protocol.ExecControllers;
@@ -56,7 +57,7 @@ final class SimulateCommand implements Command {
     public String synopsis() {
         return "--seed S [--internal-seed I (default: S)] [--faults SET] [--png FILE] [--trace FILE.csv]"
                 + " | --load FILE [--internal-seed I] [--faults SET] [--png FILE] [--trace FILE.csv]"
-                + " | --maps N [--seed S0 (default: 1)] [--summary] [--gallery DIR];"
+                + " | --maps N [--seed S0 (default: 1)] [--summary] [--gallery DIR] [--batch B (exec: only)];"
                 + " any of them with [--controller builtin|exec:COMMAND] [--tick-timeout MS (default: "
                 + ExecControllers.DEFAULT_TICK_TIMEOUT_MILLIS + ")] [--controller-log FILE]";
     }
@@ -66,17 +67,44 @@ final class SimulateCommand implements Command {
         return "simulate maps fault-free and print the outcome (one map, or --maps N in a row on one thread)";
     }
 
+    /** The most runs --batch steps together. */
+    static final int MAX_BATCH = 64;
+
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args,
                 Set.of("--seed", "--internal-seed", "--load", "--png", "--trace", "--maps", "--faults", "--gallery",
-                        "--controller", "--tick-timeout", "--controller-log"),
+                        "--controller", "--tick-timeout", "--controller-log", "--batch"),
                 Set.of("--summary"));
         options.noPositional();
         try (ControllerChoice.Workers controllers = controllers(options, err)) {
-            ControllerFactory factory = controllers.worker(options.outputFile("--controller-log").orElse(null));
+            Path log = options.outputFile("--controller-log").orElse(null);
+            ControllerFactory factory = controllers.worker(log);
+            if (options.has("--batch")) {
+                int batch = options.count("--batch", 1, MAX_BATCH).orElseThrow();
+                if (!options.has("--maps")) {
+                    throw new UsageException("simulate: --batch B goes with --maps N: it steps B of the N runs together.");
+                }
+                BatchingProxy proxy;
+                try {
+                    proxy = controllers.batched(log, batch);
+                } catch (ControllerStartException e) {
+                    throw new UsageException("simulate: " + e.getMessage() + "; fix the command given to --controller.");
+                }
+                if (proxy == null) {
+                    throw new UsageException("simulate: --batch B goes with --controller exec:COMMAND, a controller"
+                            + " program; the others run in sitcov's process.");
+                }
+                try (proxy) {
+                    if (proxy.batch() < batch) {
+                        err.println("simulate: the controller takes " + proxy.batch() + " run" + (proxy.batch() == 1 ? "" : "s")
+                                + " a message (its hello's \"batch\"): batches of " + proxy.batch());
+                    }
+                    return calibrate(options, factory, proxy, out, err);
+                }
+            }
             if (options.has("--maps")) {
-                return calibrate(options, factory, out, err);
+                return calibrate(options, factory, null, out, err);
             }
             return simulate(options, factory, out, err);
         }
@@ -191,8 +219,9 @@ final class SimulateCommand implements Command {
         return ExitCode.OK;
     }
 
-    private int calibrate(Options options, ControllerFactory controller, PrintStream out, PrintStream err)
-            throws UsageException {
+    /** --maps N; with {@code batched} (--batch B), the runs are stepped B at a time over one controller process. */
+    private int calibrate(Options options, ControllerFactory controller, BatchingProxy batched, PrintStream out,
+                          PrintStream err) throws UsageException {
         for (String single : List.of("--internal-seed", "--load", "--png", "--trace", "--faults")) {
             if (options.has(single)) {
                 throw new UsageException("simulate: " + single + " goes with one run, not with --maps N; drop it,"
@@ -219,10 +248,14 @@ final class SimulateCommand implements Command {
         }
         Progress progress = new Progress(err, "simulate", maps,
                 err == System.err && System.console() != null, System::nanoTime);
+        // batched runs are run first, all of them; each is the run it would have been alone
+        List<RunResult> results = batched == null ? null : batched.runAll(maps, (i, f) -> Simulator.run(
+                MapGenerator.generate(first + i), first + i, Set.of(), RunObserver.NONE, f).result());
         for (int i = 0; i < maps; i++) {
             long seed = first + i;
             WorldMap map = MapGenerator.generate(seed);
-            RunResult result = Simulator.run(map, seed, Set.of(), RunObserver.NONE, controller).result();
+            RunResult result = results != null ? results.get(i)
+                    : Simulator.run(map, seed, Set.of(), RunObserver.NONE, controller).result();
             calibration.add(result);
             if (gallery != null && RunGallery.wentWrong(result)) {
                 try {

@@ -97,6 +97,11 @@ public sealed interface ControllerChoice {
                 }
 
                 @Override
+                public BatchingProxy batched(Path log, int maxBatch) throws ControllerStartException {
+                    return controllers.batched(log, maxBatch);
+                }
+
+                @Override
                 public void close() {
                     controllers.close();
                 }
@@ -130,6 +135,14 @@ public sealed interface ControllerChoice {
 
         /** Starts the controller once and handshakes, before anything runs: its name and version. */
         String check(Path log) throws ControllerStartException;
+
+        /**
+         * One controller process stepping up to {@code maxBatch} runs together (batched lockstep);
+         * null for a controller that is not a program.
+         */
+        default BatchingProxy batched(Path log, int maxBatch) throws ControllerStartException {
+            return null;
+        }
 
         @Override
         void close();

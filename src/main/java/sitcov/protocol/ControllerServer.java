@@ -31,6 +31,7 @@ public final class ControllerServer {
     private final String version;
     private final Set<Fault> extraFaults;
     private final int newestProtocol;
+    private final int batch;
 
     /**
      * A server that speaks the newest protocol sitcov offers, up to {@link Wire#PROTOCOL}.
@@ -47,6 +48,16 @@ public final class ControllerServer {
      */
     public ControllerServer(ControllerFactory controllers, String name, String version, Set<Fault> extraFaults,
                             int newestProtocol) {
+        this(controllers, name, version, extraFaults, newestProtocol, 1);
+    }
+
+    /** @param batch the most runs it takes in one message (batched lockstep; 1: one at a time) */
+    public ControllerServer(ControllerFactory controllers, String name, String version, Set<Fault> extraFaults,
+                            int newestProtocol, int batch) {
+        if (batch < 1 || (batch > 1 && newestProtocol < 2)) {
+            throw new IllegalArgumentException("batch " + batch + " with protocol " + newestProtocol);
+        }
+        this.batch = batch;
         if (!Wire.PROTOCOLS.contains(newestProtocol)) {
             throw new IllegalArgumentException("protocol " + newestProtocol + "; the protocols are " + Wire.spoken());
         }
@@ -67,14 +78,39 @@ public final class ControllerServer {
         }
         int protocol = protocol(Message.parse(first).expect("hello"));
         // the builtin car works from its own camera and LIDAR on the map, and from the objects its sensors report
-        Wire.controllerHello(w, protocol, name, version, Set.of(), Wire.DEFAULT_SENSORS, true);
+        Wire.controllerHello(w, protocol, name, version, Set.of(), Wire.DEFAULT_SENSORS, true, protocol >= 2 ? batch : 1);
         lines.write(w);
         Run run = null;
+        java.util.Map<Long, Run> slots = new java.util.HashMap<>();
         Command command = new Command();
         for (String line = lines.read(); line != null; line = lines.read()) {
             Message m = Message.parse(line);
             switch (m.type()) {
-                case "reset" -> run = start(ResetMessage.read(m));
+                case "reset" -> {
+                    if (m.has("run")) {
+                        slots.put(m.integer("run"), start(ResetMessage.read(m)));
+                    } else {
+                        run = start(ResetMessage.read(m));
+                    }
+                }
+                case "observations" -> {
+                    List<Object> items = m.list("items");
+                    w.reset().beginObject().member("type", "commands").name("items").beginArray();
+                    for (int i = 0; i < items.size(); i++) {
+                        Message item = m.messageAt(items, i, "items");
+                        Run r = slots.get(item.integer("run"));
+                        if (r == null) {
+                            throw new ProtocolException("an observation of run " + item.integer("run") + " before its reset");
+                        }
+                        r.observation.read(item);
+                        r.tick = r.observation.tick();
+                        command.clear();
+                        r.controller.step(r.observation, command);
+                        Wire.command(w, r.tick, (int) item.integer("run"), command, r.activity);
+                    }
+                    w.endArray().endObject();
+                    lines.write(w);
+                }
                 case "observation" -> {
                     if (run == null) {
                         throw new ProtocolException("an observation before any reset");
@@ -87,7 +123,12 @@ public final class ControllerServer {
                     lines.write(w);
                 }
                 case "end" -> {
-                    if (run != null) {
+                    if (m.has("run")) {
+                        Run ended = slots.remove(m.integer("run"));
+                        if (ended != null) {
+                            ended.controller.end(new RunEnd(m.text("outcome"), m.integer("ticks")));
+                        }
+                    } else if (run != null) {
                         run.controller.end(new RunEnd(m.text("outcome"), m.integer("ticks")));
                         run = null;
                     }

@@ -55,6 +55,18 @@ public final class ExecControllers implements AutoCloseable {
     }
 
     /**
+     * One process that steps up to {@code maxBatch} runs together (batched lockstep), started and
+     * handshaken now; its stderr is appended to {@code log} (discarded when null). {@link
+     * BatchingProxy#close} ends it.
+     *
+     * @throws ControllerStartException naming the command and what went wrong
+     */
+    public BatchingProxy batched(Path log, int maxBatch) throws ControllerStartException {
+        return BatchingProxy.open(() -> ControllerProcess.start(command, log, sitcovVersion, handshakeTimeoutMillis),
+                tickTimeoutMillis, maxBatch);
+    }
+
+    /**
      * Starts one process, handshakes, and ends it: the controller's name and version when it
      * answered as the protocol asks.
      *

@@ -153,6 +153,17 @@ final class Message {
         return of(map, this, name, index);
     }
 
+    /** The message at {@code index} of an array member {@code name}: an object with a string "type" (an item of a batch). */
+    Message messageAt(List<Object> items, int index, String name) throws ProtocolException {
+        Object v = items.get(index);
+        if (!(v instanceof Map<?, ?> map) || !(map.get("type") instanceof String type)) {
+            throw new ProtocolException(where() + "." + name + "[" + index + "] must be an object with a string \"type\"");
+        }
+        @SuppressWarnings("unchecked")
+        Map<String, Object> members = (Map<String, Object>) map;
+        return new Message(type, members, this, name, index);
+    }
+
     /** The whole number at {@code index} of an array member {@code name}. */
     long wholeAt(List<Object> items, int index, String name) throws ProtocolException {
         Object v = items.get(index);

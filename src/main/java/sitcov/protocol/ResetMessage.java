@@ -28,6 +28,11 @@ import sitcov.world.WorldMap;
 record ResetMessage(WorldMap map, long internalSeed, Set<Fault> faults) {
 
     static void write(JsonWriter w, RunStart run, Set<Fault> faults) {
+        write(w, run, faults, -1);
+    }
+
+    /** The reset of a run of a batch, tagged with its slot when {@code slot} is 0 or more. */
+    static void write(JsonWriter w, RunStart run, Set<Fault> faults, int slot) {
         Layout layout = run.map().layout();
         w.reset().beginObject().member("type", "reset").name("map").beginObject().member("seed", layout.seed());
         w.name("roads").beginArray();
@@ -52,7 +57,11 @@ record ResetMessage(WorldMap map, long internalSeed, Set<Fault> faults) {
         for (Fault f : faults) {
             w.value(f.id());
         }
-        w.endArray().endObject();
+        w.endArray();
+        if (slot >= 0) {
+            w.member("run", slot);
+        }
+        w.endObject();
     }
 
     static ResetMessage read(Message m) throws ProtocolException {

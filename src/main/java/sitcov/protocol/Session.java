@@ -121,23 +121,65 @@ final class Session implements AutoCloseable {
             throw new ControllerFailure(ControllerFailure.Kind.ERROR, "controller " + shown + " failed earlier in this run");
         }
         Wire.observation(writer, now, hello);
+        return answer(now.tick(), timeoutMillis);
+    }
+
+    /**
+     * Sends the observations of several runs in one message ({@code slots[i]} is the slot of
+     * {@code now.get(i)}) and returns the line of their commands; failures as {@link #step}.
+     */
+    String stepBatch(java.util.List<Observation> now, int[] slots, long timeoutMillis) {
+        if (dead) {
+            throw new ControllerFailure(ControllerFailure.Kind.ERROR, "controller " + shown + " failed earlier in this run");
+        }
+        Wire.observations(writer, now, slots, hello);
+        return answer(now.get(0).tick(), timeoutMillis);
+    }
+
+    /** Writes the message in the writer and reads the answer to the observation(s) of {@code tick}. */
+    private String answer(long tick, long timeoutMillis) {
         String line;
         try {
             line = exchange(timeoutMillis);
         } catch (IOException e) {
             if (state.get() == TIMED_OUT) {
-                throw timeout(now.tick(), timeoutMillis);
+                throw timeout(tick, timeoutMillis);
             }
             throw error("it exited" + exitStatus.get() + " or closed its input before the observation of tick "
-                    + now.tick() + " (" + e.getMessage() + ")");
+                    + tick + " (" + e.getMessage() + ")");
         }
         if (state.get() == TIMED_OUT) {
-            throw timeout(now.tick(), timeoutMillis);
+            throw timeout(tick, timeoutMillis);
         }
         if (line == null) {
-            throw error("it exited" + exitStatus.get() + " at tick " + now.tick() + " instead of answering the observation");
+            throw error("it exited" + exitStatus.get() + " at tick " + tick + " instead of answering the observation");
         }
         return line;
+    }
+
+    /** Starts the run of a batch's {@code slot}; false when the controller could not be written to (it is then dead). */
+    boolean reset(RunStart run, Set<Fault> faults, int slot) {
+        ResetMessage.write(writer, run, faults, slot);
+        return writeOrDie();
+    }
+
+    /** Tells the controller how the run of a batch's {@code slot} ended (no answer is read). */
+    void end(RunEnd how, int slot) {
+        if (dead) {
+            return;
+        }
+        Wire.end(writer, how, slot);
+        writeOrDie();
+    }
+
+    private boolean writeOrDie() {
+        try {
+            lines.write(writer);
+            return true;
+        } catch (IOException e) {
+            close();
+            return false;
+        }
     }
 
     private ControllerFailure timeout(long tick, long timeoutMillis) {

@@ -40,13 +40,21 @@ final class Wire {
     static final List<String> SENSORS = List.of("radar", "obstacles", "camera", "lidar");
     /** What a controller that says nothing of sensors gets: the objects its sensors report, no raw hits. */
     static final List<String> DEFAULT_SENSORS = List.of("radar", "obstacles");
+    /** The most runs sitcov steps together for one controller process (its hello's "max_batch"). */
+    static final int MAX_BATCH = 64;
 
     private Wire() {
     }
 
     /** What a controller said at hello: who it is and what it wants in each observation. */
     record Hello(int protocol, String name, String version, Set<Channel> channels, boolean radar, boolean obstacles,
-                 boolean camera, boolean lidar, boolean seededFaults) {
+                 boolean camera, boolean lidar, boolean seededFaults, int batch) {
+        /** A controller that takes one run at a time (no "batch" at hello). */
+        Hello(int protocol, String name, String version, Set<Channel> channels, boolean radar, boolean obstacles,
+              boolean camera, boolean lidar, boolean seededFaults) {
+            this(protocol, name, version, channels, radar, obstacles, camera, lidar, seededFaults, 1);
+        }
+
         /** A controller that has none of sitcov's seeded faults: it may report no fault activation. */
         Hello(int protocol, String name, String version, Set<Channel> channels, boolean radar, boolean obstacles,
               boolean camera, boolean lidar) {
@@ -81,12 +89,33 @@ final class Wire {
         w.name("limits").beginObject().member("max_speed", Dynamics.MAX_SPEED).member("max_turn", Dynamics.MAX_TURN)
                 .member("tick_seconds", sitcov.world.Dimensions.TICK_SECONDS).member("sensor_range", Observation.SENSOR_RANGE)
                 .endObject();
+        w.member("max_batch", MAX_BATCH);
         w.endObject();
     }
 
     static void observation(JsonWriter w, Observation now, Hello wants) {
-        w.reset().beginObject().member("type", "observation").member("tick", now.tick())
-                .member("x", now.x()).member("y", now.y()).member("heading", now.heading()).member("speed", now.speed());
+        observation(w.reset(), now, wants, -1);
+    }
+
+    /**
+     * Several runs' observations in one message, each tagged with its run's slot ({@code slots[i]}
+     * for {@code now.get(i)}): {"type":"observations","items":[...]}.
+     */
+    static void observations(JsonWriter w, List<Observation> now, int[] slots, Hello wants) {
+        w.reset().beginObject().member("type", "observations").name("items").beginArray();
+        for (int i = 0; i < now.size(); i++) {
+            observation(w, now.get(i), wants, slots[i]);
+        }
+        w.endArray().endObject();
+    }
+
+    /** One observation, tagged with its run's slot when {@code slot} is 0 or more, into {@code w} as it stands. */
+    private static void observation(JsonWriter w, Observation now, Hello wants, int slot) {
+        w.beginObject().member("type", "observation").member("tick", now.tick());
+        if (slot >= 0) {
+            w.member("run", slot);
+        }
+        w.member("x", now.x()).member("y", now.y()).member("heading", now.heading()).member("speed", now.speed());
         if (wants.radar()) {
             w.name("traffic").beginArray();
             List<Vehicle> traffic = now.traffic();
@@ -139,8 +168,16 @@ final class Wire {
     }
 
     static void end(JsonWriter w, RunEnd how) {
-        w.reset().beginObject().member("type", "end").member("outcome", how.outcome()).member("ticks", how.ticks())
-                .endObject();
+        end(w, how, -1);
+    }
+
+    /** A run's end, tagged with its slot when {@code slot} is 0 or more (batches). */
+    static void end(JsonWriter w, RunEnd how, int slot) {
+        w.reset().beginObject().member("type", "end").member("outcome", how.outcome()).member("ticks", how.ticks());
+        if (slot >= 0) {
+            w.member("run", slot);
+        }
+        w.endObject();
     }
 
     // ---- controller -> sitcov
@@ -171,8 +208,16 @@ final class Wire {
         }
         String name = m.has("name") ? m.text("name") : "unnamed";
         String version = m.has("version") ? m.text("version") : "";
+        long batch = m.has("batch") ? m.integer("batch") : 1;
+        if (batch < 1) {
+            throw new ProtocolException("its batch must be 1 or more (the most runs it takes in one message), got " + batch);
+        }
+        if (batch > 1 && protocol < 2) {
+            throw new ProtocolException("batches (\"batch\": " + batch + ") need protocol 2: a batch's commands echo their ticks");
+        }
         return new Hello((int) protocol, name, version, channels, sensors.contains("radar"), sensors.contains("obstacles"),
-                sensors.contains("camera"), sensors.contains("lidar"), m.optionalFlag("faults"));
+                sensors.contains("camera"), sensors.contains("lidar"), m.optionalFlag("faults"),
+                (int) Math.min(batch, MAX_BATCH));
     }
 
     /** "1 and 2". */
@@ -316,8 +361,17 @@ final class Wire {
     /** A hello that says, with {@code seededFaults}, that the controller has sitcov's seeded faults and reports them. */
     static void controllerHello(JsonWriter w, int protocol, String name, String version, Set<Channel> channels,
                                 List<String> sensors, boolean seededFaults) {
+        controllerHello(w, protocol, name, version, channels, sensors, seededFaults, 1);
+    }
+
+    /** The same, taking up to {@code batch} runs in one message (written only when more than 1). */
+    static void controllerHello(JsonWriter w, int protocol, String name, String version, Set<Channel> channels,
+                                List<String> sensors, boolean seededFaults, int batch) {
         w.reset().beginObject().member("type", "hello").member("protocol", protocol).member("name", name)
                 .member("version", version);
+        if (batch > 1) {
+            w.member("batch", batch);
+        }
         if (seededFaults) {
             w.member("faults", true);
         }
@@ -337,9 +391,17 @@ final class Wire {
      * it names the tick it answers ({@code tick}; protocol 1: pass a negative tick, none is written).
      */
     static void command(JsonWriter w, long tick, Command c, FaultActivity activity) {
-        w.reset().beginObject().member("type", "command");
+        command(w.reset(), tick, -1, c, activity);
+    }
+
+    /** A command into {@code w} as it stands, naming its run's slot when {@code slot} is 0 or more (an item of a batch's commands). */
+    static void command(JsonWriter w, long tick, int slot, Command c, FaultActivity activity) {
+        w.beginObject().member("type", "command");
         if (tick >= 0) {
             w.member("tick", tick);
+        }
+        if (slot >= 0) {
+            w.member("run", slot);
         }
         if (Double.isNaN(c.speed())) {
             w.member("speed_change", c.speedChange());

@@ -212,4 +212,51 @@ class SimulateCommandTest {
         assertTrue(Files.readString(gallery.resolve("index.html")).contains("<img src=\"" + index.get(1).split(",")[0]));
         assertTrue(r.out().contains("Gallery: " + expected.size() + " runs"), r.out());
     }
+
+    @Test
+    void runsBatchedOverAControllerProgramPrintWhatRunsOneAtATimePrint() throws java.io.IOException {
+        org.junit.jupiter.api.Assumptions.assumeTrue("true".equals(System.getenv("CI")) || python3Runs(),
+                "python3 is not installed here: batches over a Python controller are not tested");
+        Path script = folder.resolve("batched.py");
+        Files.writeString(script, String.join("\n",
+                "import sys",
+                "sys.path.insert(0, 'experiments/controllers')",
+                "from sitcov_client import serve",
+                "def step(o):",
+                "    ch = o['channels']",
+                "    speed = min(1.5, ch['target_distance'] / 3.0)",
+                "    if ch['distance_to_junction'] is not None:",
+                "        speed = min(speed, max(0.0, (ch['distance_to_junction'] - 2.0) / 4.0))",
+                "    return {'speed': speed, 'steering': -(ch['heading_error'] or 0.0) - 5 * (ch['lane_offset'] or 0.0)}",
+                "serve(step_batch=lambda obs: [step(o) for o in obs], name='batched', channels=['lane_offset',"
+                        + " 'heading_error', 'distance_to_junction', 'target_distance'], sensors=[], batch=4)",
+                ""));
+        String controller = "exec:python3 " + script;
+        CliRunner one = CliRunner.run("simulate", "--maps", "5", "--controller", controller);
+        CliRunner four = CliRunner.run("simulate", "--maps", "5", "--controller", controller, "--batch", "4");
+        assertEquals(ExitCode.OK, one.exitCode(), one.err());
+        assertEquals(ExitCode.OK, four.exitCode(), four.err());
+        assertEquals(one.out(), four.out());
+        assertFalse(four.out().contains("CONTROLLER_ERROR"), four.out());
+        assertTrue(four.out().contains("seed 5 internal 5"), four.out());
+        assertFalse(four.err().contains("batches of"), four.err());
+    }
+
+    @Test
+    void batchesGoWithManyMapsAndAControllerProgram() {
+        CliRunner builtin = CliRunner.run("simulate", "--maps", "2", "--batch", "4");
+        assertEquals(ExitCode.USAGE, builtin.exitCode());
+        assertTrue(builtin.err().contains("--batch B goes with --controller exec:COMMAND"), builtin.err());
+        CliRunner one = CliRunner.run("simulate", "--seed", "2", "--batch", "4");
+        assertEquals(ExitCode.USAGE, one.exitCode());
+        assertTrue(one.err().contains("--batch B goes with --maps N"), one.err());
+    }
+
+    private static boolean python3Runs() {
+        try {
+            return new ProcessBuilder("python3", "--version").start().waitFor() == 0;
+        } catch (java.io.IOException | InterruptedException e) {
+            return false;
+        }
+    }
 }

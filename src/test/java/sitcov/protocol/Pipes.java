@@ -37,7 +37,31 @@ final class Pipes {
         return new ProxyFactory(() -> connect(peer), 60_000);
     }
 
-    private static Session connect(Peer peer) throws ControllerStartException {
+    /**
+     * Runs batched by up to {@code maxBatch} over one in-process server of {@code served} that
+     * takes up to {@code serverBatch} runs a message.
+     */
+    static BatchingProxy batching(ControllerFactory served, int serverBatch, int maxBatch) throws ControllerStartException {
+        return batching((in, out) -> new ControllerServer(served, "in-process", "test", Set.of(), Wire.PROTOCOL, serverBatch)
+                .serve(in, out), maxBatch);
+    }
+
+    /** Runs batched by up to {@code maxBatch} over {@code peer}, started afresh on a thread for every connection. */
+    static BatchingProxy batching(Peer peer, int maxBatch) throws ControllerStartException {
+        return BatchingProxy.open(() -> connect((in, out) -> {
+            try {
+                peer.serve(in, out);
+            } catch (IOException e) {
+                // a piped stream is tied to the thread that last wrote to it: once the batch's threads are done,
+                // before sitcov closes the pipe, a read finds that thread gone; as an end of input here
+                if (!"Write end dead".equals(e.getMessage())) {
+                    throw e;
+                }
+            }
+        }), 60_000, maxBatch);
+    }
+
+    static Session connect(Peer peer) throws ControllerStartException {
         try {
             PipedOutputStream toServer = new PipedOutputStream();
             PipedInputStream serverIn = new PipedInputStream(toServer, 1 << 16);

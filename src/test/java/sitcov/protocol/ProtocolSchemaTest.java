@@ -208,6 +208,86 @@ class ProtocolSchemaTest {
                     + "\"effective\":[[19,2]]}}");
 
     @Test
+    void aBatchedExchangeKeepsTheSchema() throws ControllerStartException, IOException {
+        ByteArrayOutputStream toServer = new ByteArrayOutputStream();
+        ByteArrayOutputStream fromServer = new ByteArrayOutputStream();
+        // the builtin car's server taking batches of 2, every byte each way recorded
+        Pipes.Peer recorded = (in, out) -> new ControllerServer(BuiltinCar.FACTORY, "in-process", "test", Set.of(),
+                Wire.PROTOCOL, 2).serve(new java.io.FilterInputStream(in) {
+                    @Override
+                    public int read(byte[] b, int off, int len) throws IOException {
+                        int n = super.read(b, off, len);
+                        if (n > 0) {
+                            synchronized (toServer) {
+                                toServer.write(b, off, n);
+                            }
+                        }
+                        return n;
+                    }
+                }, new java.io.FilterOutputStream(out) {
+                    @Override
+                    public void write(byte[] b, int off, int len) throws IOException {
+                        synchronized (fromServer) {
+                            fromServer.write(b, off, len);
+                        }
+                        out.write(b, off, len);
+                    }
+                });
+        try (BatchingProxy two = Pipes.batching(recorded, 2)) {
+            assertEquals(2, two.batch());
+            two.runAll(2, (i, f) -> Simulator.run(MapGenerator.generate(i + 2), i + 2, Set.of(), RunObserver.NONE, f));
+        }
+        List<Case> cases = new ArrayList<>();
+        Set<String> types = new HashSet<>();
+        int items = 0;
+        for (String line : lines(toServer, fromServer)) {
+            Message m;
+            try {
+                m = Message.parse(line);
+            } catch (ProtocolException e) {
+                throw new AssertionError(line, e);
+            }
+            types.add(m.type());
+            boolean sitcovs = line.contains("\"sitcov\"") || !m.type().equals("hello") && !m.type().equals("commands");
+            String def = m.type().equals("hello") ? (sitcovs ? "sitcovHello" : "controllerHello") : m.type();
+            if (m.type().equals("observations")) {
+                items += (int) line.chars().filter(c -> c == '{').count();
+            }
+            if (!m.type().equals("hello")) {
+                assertTrue(line.contains("\"run\":"), "a batch's message names its run: " + line);
+            }
+            cases.add(new Case(def, line, "a batched exchange's " + m.type()));
+        }
+        assertEquals(Set.of("hello", "reset", "observations", "commands", "end"), types);
+        assertTrue(items > 20, "observations sent in batches");
+        List<String[]> verdicts = validate(cases);
+        for (int i = 0; i < cases.size(); i++) {
+            Case c = cases.get(i);
+            assertEquals("ok", verdicts.get(i)[0], c.what + " against #/$defs/" + c.def + ": " + c.line);
+            assertEquals("ok", verdicts.get(i)[1], c.what + " against the schema: " + c.line);
+        }
+    }
+
+    /** The lines recorded each way, sitcov's first; only every tenth batch of each way (the schema takes a while a line). */
+    private static List<String> lines(ByteArrayOutputStream... recorded) {
+        List<String> all = new ArrayList<>();
+        for (ByteArrayOutputStream r : recorded) {
+            String[] lines;
+            synchronized (r) {
+                lines = r.toString(StandardCharsets.UTF_8).split("\n");
+            }
+            int batches = 0;
+            for (String line : lines) {
+                boolean batch = line.startsWith("{\"type\":\"observations\"") || line.startsWith("{\"type\":\"commands\"");
+                if (!line.isBlank() && (!batch || batches++ % 10 == 0)) {
+                    all.add(line);
+                }
+            }
+        }
+        return all;
+    }
+
+    @Test
     void theSchemaRefusesEveryCommandSitcovRefusesAndTakesTheOddOnesSitcovTakes() throws IOException, ProtocolException {
         List<Case> cases = new ArrayList<>();
         for (String[] bad : BAD_COMMANDS) {

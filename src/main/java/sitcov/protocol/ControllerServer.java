@@ -78,7 +78,7 @@ public final class ControllerServer {
         }
         int protocol = protocol(Message.parse(first).expect("hello"));
         // the builtin car works from its own camera and LIDAR on the map, and from the objects its sensors report
-        Wire.controllerHello(w, protocol, name, version, Set.of(), Wire.DEFAULT_SENSORS, true, protocol >= 2 ? batch : 1);
+        ControllerWire.hello(w, protocol, name, version, Set.of(), Wire.DEFAULT_SENSORS, true, protocol >= 2 ? batch : 1);
         lines.write(w);
         Run run = null;
         java.util.Map<Long, Run> slots = new java.util.HashMap<>();
@@ -106,7 +106,7 @@ public final class ControllerServer {
                         r.tick = r.observation.tick();
                         command.clear();
                         r.controller.step(r.observation, command);
-                        Wire.command(w, r.tick, (int) item.integer("run"), command, r.activity);
+                        ControllerWire.command(w, r.tick, (int) item.integer("run"), command, r.activity);
                     }
                     w.endArray().endObject();
                     lines.write(w);
@@ -119,7 +119,7 @@ public final class ControllerServer {
                     run.tick = run.observation.tick();
                     command.clear();
                     run.controller.step(run.observation, command);
-                    Wire.command(w, protocol >= 2 ? run.tick : -1, command, run.activity);
+                    ControllerWire.command(w, protocol >= 2 ? run.tick : -1, command, run.activity);
                     lines.write(w);
                 }
                 case "end" -> {

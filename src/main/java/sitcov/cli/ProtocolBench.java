@@ -24,7 +24,7 @@ final class ProtocolBench {
     /** Maps before the timing are drawn from seeds far from the timed ones. */
     private static final long WARM_UP_SEED = 1_000_000L;
     /** Runs over the protocol before the timing: fewer leave the JIT compiling during it. */
-    private static final int PROTOCOL_WARM_UP_RUNS = 3;
+    private static final int PROTOCOL_WARM_UP_RUNS = 12;
     /** The batches --protocol times side by side (batched lockstep; 1 is one run at a time). */
     private static final int[] BATCHES = {1, 8, 32};
     /**

@@ -12,6 +12,7 @@ import sitcov.analysis.Comparison;
 import sitcov.analysis.FaultComparison;
 import sitcov.analysis.Finding;
 import sitcov.analysis.PairedDifference;
+import sitcov.judge.Variant;
 
 /** The per-fault sentence of one pair: which faults each driver's maps find more often, and which could not be tested. */
 public final class FaultFindings {
@@ -21,15 +22,15 @@ public final class FaultFindings {
     static String line(Comparison comparison, String a, String b) {
         List<String> moreA = new ArrayList<>();
         List<String> moreB = new ArrayList<>();
-        List<Integer> none = new ArrayList<>();
+        List<Variant> none = new ArrayList<>();
         double lowest = Double.POSITIVE_INFINITY;
         double highest = 0;
-        Map<String, List<Integer>> untested = new TreeMap<>();
+        Map<String, List<Variant>> untested = new TreeMap<>();
         for (FaultComparison f : comparison.faults()) {
             if (!f.driverA().equals(a) || !f.driverB().equals(b)) {
                 continue;
             }
-            int id = f.variant().id();
+            Variant id = f.variant();
             switch (f.finding()) {
                 case HIGHER_A -> moreA.add(found(f));
                 case HIGHER_B -> moreB.add(found(f));
@@ -46,8 +47,9 @@ public final class FaultFindings {
                 case EQUIVALENT -> throw new IllegalStateException("faults are not tested for equivalence");
             }
         }
-        StringBuilder s = new StringBuilder("- per fault (each replication's share of its maps finding the fault, paired"
-                + " signed-rank test, Holm-adjusted): ");
+        String word = VerdictText.noun(comparison.faults().stream().map(FaultComparison::variant).toList(), 1);
+        StringBuilder s = new StringBuilder("- per " + word + " (each replication's share of its maps finding the " + word
+                + ", paired signed-rank test, Holm-adjusted): ");
         List<String> parts = new ArrayList<>();
         if (!moreA.isEmpty()) {
             parts.add("found on a larger share of " + a + "'s maps: " + String.join("; ", moreA));
@@ -64,7 +66,7 @@ public final class FaultFindings {
         if (!why.isEmpty()) {
             parts.add("not tested: " + String.join(", ", why));
         }
-        return s.append(parts.isEmpty() ? "no faults." : String.join("; ", parts) + ".").toString();
+        return s.append(parts.isEmpty() ? "no " + word + "s." : String.join("; ", parts) + ".").toString();
     }
 
     /** "fault 16 (59.8 % of fault-search's maps against 38.7 % of random's, +21.3 points, CI …)": the higher first. */
@@ -74,8 +76,8 @@ public final class FaultFindings {
         double sign = a ? 1 : -1;
         double low = a ? d.difference().low() : -d.difference().high();
         double high = a ? d.difference().high() : -d.difference().low();
-        return String.format(Locale.ROOT, "fault %d (%s %% of %s's maps against %s %% of %s's, +%s points, CI %s to %s;"
-                + " Holm p = %s)", f.variant().id(), percent(a ? d.meanA() : d.meanB()), a ? f.driverA() : f.driverB(),
+        return String.format(Locale.ROOT, "%s %d (%s %% of %s's maps against %s %% of %s's, +%s points, CI %s to %s;"
+                + " Holm p = %s)", VerdictText.noun(List.of(f.variant()), 1), f.variant().id(), percent(a ? d.meanA() : d.meanB()), a ? f.driverA() : f.driverB(),
                 percent(a ? d.meanB() : d.meanA()), a ? f.driverB() : f.driverA(), points(sign * d.difference().estimate()),
                 points(low), points(high), p(d.pAdjusted()));
     }

@@ -64,13 +64,14 @@ public final class PairSummary {
 
     /** "3 faults (0, 7, 16)" found on a larger share of one driver's maps, if any. */
     private static java.util.Optional<String> faults(List<FaultComparison> faults, Finding finding) {
-        List<String> ids = faults.stream().filter(f -> f.finding() == finding).map(f -> String.valueOf(f.variant().id()))
+        List<sitcov.judge.Variant> found = faults.stream().filter(f -> f.finding() == finding).map(FaultComparison::variant)
                 .toList();
-        if (ids.isEmpty()) {
+        if (found.isEmpty()) {
             return java.util.Optional.empty();
         }
-        return java.util.Optional.of(ids.size() == 1 ? "fault " + ids.get(0) + " (found on more of its maps)"
-                : ids.size() + " faults found on more of its maps (" + String.join(", ", ids) + ")");
+        return java.util.Optional.of(found.size() == 1 ? VerdictText.ids(found) + " (found on more of its maps)"
+                : found.size() + " " + VerdictText.noun(found, found.size()) + " found on more of its maps ("
+                + String.join(", ", found.stream().map(v -> String.valueOf(v.id())).toList()) + ")");
     }
 
     private static String and(List<String> items) {

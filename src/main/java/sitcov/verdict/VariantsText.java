@@ -12,8 +12,8 @@ import sitcov.oracle.Failure;
 /**
  * The verdict's account of the variants when they are not the builtin car's seeded faults compared
  * by two or more drivers (the paper's experiment, whose ids the fault catalogue explains): a key to
- * which controller each id is, and each variant against the reference — where it failed and the
- * reference did not, and the other way round.
+ * which controller each id is (the verdict calls them variants, the files' columns faults), and each
+ * variant against the reference — where it failed and the reference did not, and the other way round.
  */
 public final class VariantsText {
     private VariantsText() {
@@ -38,8 +38,8 @@ public final class VariantsText {
         for (Variant v : config.variants()) {
             keys.add(v.id() + " = " + v.label() + " (" + v.spec() + ")");
         }
-        out.add("Reference " + config.controller() + "; its variants, each named by its id where the tables and tests"
-                + " below say \"fault\": " + String.join("; ", keys) + ".");
+        out.add("Reference " + config.controller() + "; its variants, named below by their ids (which the files' fault"
+                + " columns hold): " + String.join("; ", keys) + ".");
         out.add(PairSummary.HEADING + "Each variant against the reference (distinct maps judged, all drivers)");
         for (VariantFindings.Row r : findings.rows()) {
             out.add(row(r));

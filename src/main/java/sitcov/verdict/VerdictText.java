@@ -11,6 +11,7 @@ import sitcov.analysis.PairedDifference;
 import sitcov.analysis.SituationFaults;
 import sitcov.experiment.AnalysisPlan;
 import sitcov.experiment.BudgetKind;
+import sitcov.judge.Variant;
 import sitcov.experiment.Direction;
 import sitcov.experiment.Measure;
 
@@ -197,21 +198,21 @@ public final class VerdictText {
     static String uniformity(List<SituationFaults.Uniformity> tests) {
         double explained = 0;
         double chance = 0;
-        List<Integer> counted = new ArrayList<>();
-        List<Integer> rare = new ArrayList<>();
-        List<Integer> common = new ArrayList<>();
+        List<Variant> counted = new ArrayList<>();
+        List<Variant> rare = new ArrayList<>();
+        List<Variant> common = new ArrayList<>();
         int beyond = 0;
         for (SituationFaults.Uniformity u : tests) {
             Optional<String> out = leftOut(u.found(), u.maps());
             if (out.isPresent()) {
                 if (out.get().equals(TOO_RARE)) {
-                    rare.add(u.variant().id());
+                    rare.add(u.variant());
                 } else if (out.get().equals(TOO_RARELY_MISSED)) {
-                    common.add(u.variant().id());
+                    common.add(u.variant());
                 }
                 continue;
             }
-            counted.add(u.variant().id());
+            counted.add(u.variant());
             explained += u.explained();
             chance += u.byChance();
             beyond += u.p() < ALPHA ? 1 : 0;
@@ -234,13 +235,20 @@ public final class VerdictText {
                 + " the %s found on some maps but not all (%s), the coverage cell explains on average %.1f %% of"
                 + " the variation in whether a map finds the fault, against %.1f %% when the same maps are dealt to cells"
                 + " at random; for %d of them more than chance (permutation p < %s, not adjusted).", maps,
-                counted.size() == 1 ? "fault" : counted.size() + " faults",
+                counted.size() == 1 ? noun(counted, 1) : counted.size() + " " + noun(counted, counted.size()),
                 ids(counted), 100 * explained / counted.size(), 100 * chance / counted.size(), beyond, plain(ALPHA))
                 + leftOut;
     }
 
-    static String ids(List<Integer> ids) {
-        return (ids.size() == 1 ? "fault " : "faults ") + String.join(", ", ids.stream().map(String::valueOf).toList());
+    /** "fault 16", "faults 2, 8": seeded faults by their word, other controllers as "variant 1", "variants 1, 2". */
+    static String ids(List<Variant> ids) {
+        return noun(ids, ids.size()) + " " + String.join(", ", ids.stream().map(v -> String.valueOf(v.id())).toList());
+    }
+
+    /** "fault", "faults", "variant" or "variants": a variant is a fault where the builtin car's seeded faults are meant. */
+    static String noun(List<Variant> of, int count) {
+        String word = of.stream().allMatch(v -> v instanceof Variant.Seeded) ? "fault" : "variant";
+        return count == 1 ? word : word + "s";
     }
 
     public static String number(double v) {

@@ -343,8 +343,6 @@ public final class BuiltinCar implements Controller, Bodied {
         return intent.limitedBy();
     }
 
-
-
     /** Which behaviour steered in the last tick. */
     public String steeredBy() {
         return intent.steeredBy();
@@ -355,17 +353,10 @@ public final class BuiltinCar implements Controller, Bodied {
         return AutonomousCar.ID;
     }
 
-
-
-
-
-
-
     @Override
     public double length() {
         return Dimensions.AUTONOMOUS_CAR_LENGTH;
     }
-
 
     @Override
     public double width() {

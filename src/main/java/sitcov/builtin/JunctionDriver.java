@@ -73,7 +73,6 @@ final class JunctionDriver {
         return waiting;
     }
 
-
     /** Lets go of the junction once the car's whole footprint has left its square. */
     void releaseIfLeft() {
         if (held >= 0 && !crossing) {

@@ -253,7 +253,6 @@ public final class Lidar {
         return hitParked[hit];
     }
 
-
     private static double distanceSq(Box body, double x, double y) {
         double cx = body.centreX() - x;
         double cy = body.centreY() - y;

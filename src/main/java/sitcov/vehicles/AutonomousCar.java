@@ -256,12 +256,6 @@ public final class AutonomousCar implements Bodied, Steppable {
         return ID;
     }
 
-
-
-
-
-
-
     @Override
     public double length() {
         return Dimensions.AUTONOMOUS_CAR_LENGTH;
@@ -271,7 +265,6 @@ public final class AutonomousCar implements Bodied, Steppable {
     public double width() {
         return Dimensions.AUTONOMOUS_CAR_WIDTH;
     }
-
 
     @Override
     public boolean isActive() {

@@ -324,17 +324,10 @@ public final class MovingCar implements Bodied, Steppable {
         return id;
     }
 
-
-
-
-
-
-
     @Override
     public double length() {
         return Dimensions.CAR_LENGTH;
     }
-
 
     @Override
     public double width() {

@@ -56,13 +56,13 @@ final class RecordedRows {
     static Optional<String> differences(ResultsRows.Row row, JudgedMap judged) {
         RunSummary recorded = row.map().faultFree();
         RunSummary replayed = RunSummary.of(judged.faultFree());
-        if (!recorded.equals(replayed)) {
+        if (!recorded.agrees(replayed)) {
             return Optional.of("the fault-free run was recorded as " + words(recorded) + ", it now gives " + words(replayed));
         }
         if (row.outcome().isPresent()) {
             FaultOutcome was = row.outcome().get();
             FaultOutcome now = FaultOutcome.of(judged.verdicts().get(0));
-            if (!was.equals(now)) {
+            if (!was.agrees(now)) {
                 return Optional.of("fault " + was.variant().id() + " was recorded as " + words(was) + ", it now gives "
                         + words(now));
             }

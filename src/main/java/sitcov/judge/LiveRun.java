@@ -192,6 +192,6 @@ public final class LiveRun {
                 detector.excusedContacts(), detector.ticks(), Margins.of(nearMisses),
                 scene.telemetry().failure() == null ? "" : java.util.Objects.toString(scene.telemetry().failure().getMessage(), ""),
                 scene.telemetry().clampedTicks());
-        return new RunRecord(result, faults, switchboard.activations());
+        return new RunRecord(result, faults, switchboard.activations(), scene.autonomousCar().commandLog());
     }
 }

@@ -8,6 +8,7 @@ import java.util.function.Function;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
+import sitcov.vehicles.CommandLog;
 import sitcov.world.WorldMap;
 
 /**
@@ -28,15 +29,19 @@ public final class MapRunner {
         if (forks(faults, controller)) {
             return ForkedRuns.judge(map, internalSeed, faults, length, controller).judged();
         }
-        RunResult faultFree = Simulator.run(map, internalSeed, Set.of(), RunObserver.NONE, controller).result();
+        RunRecord reference = Simulator.run(map, internalSeed, Set.of(), RunObserver.NONE, controller);
+        RunResult faultFree = reference.result();
         List<FaultVerdict> verdicts = new ArrayList<>(faults.size());
+        List<CommandLog> commands = new ArrayList<>(1 + faults.size());
+        commands.add(reference.commands());
         for (Fault fault : faults) {
             RunRecord faulty = length == FaultyRuns.UNTIL_VERDICT
                     ? Simulator.runUntilVerdict(map, internalSeed, EnumSet.of(fault), faultFree, controller)
                     : Simulator.runJudged(map, internalSeed, EnumSet.of(fault), controller);
             verdicts.add(DifferentialOracle.judge(faultFree, faulty, fault));
+            commands.add(faulty.commands());
         }
-        return new JudgedMap(faultFree, verdicts);
+        return new JudgedMap(faultFree, verdicts, commands);
     }
 
     /**
@@ -53,22 +58,27 @@ public final class MapRunner {
             return judge(map, internalSeed, seeded, length, reference);
         }
         CommandTrace trace = new CommandTrace();
-        RunResult base = Simulator.run(map, internalSeed, Set.of(), trace, reference).result();
+        RunRecord baseRun = Simulator.run(map, internalSeed, Set.of(), trace, reference);
+        RunResult base = baseRun.result();
         List<FaultVerdict> verdicts = new ArrayList<>(variants.size());
+        List<CommandLog> commands = new ArrayList<>(1 + variants.size());
+        commands.add(baseRun.commands());
         for (Variant v : variants) {
             VerdictWatch watch = length == FaultyRuns.UNTIL_VERDICT ? new VerdictWatch(base) : null;
             if (v instanceof Variant.Seeded s) {
                 RunRecord faulty = Simulator.drive(new LiveRun(map, internalSeed, EnumSet.of(s.fault()), reference)
                         .judged(), RunObserver.NONE, watch);
                 verdicts.add(DifferentialOracle.judge(base, faulty, s.fault()));
+                commands.add(faulty.commands());
             } else if (v instanceof Variant.Controller c) {
                 CommandTrace.Comparison differs = trace.comparison();
-                RunResult run = Simulator.drive(new LiveRun(map, internalSeed, Set.of(), controllers.apply(c)).judged(),
-                        differs, watch).result();
-                verdicts.add(DifferentialOracle.judge(base, run, c, true, differs.differing(), differs.first()));
+                RunRecord run = Simulator.drive(new LiveRun(map, internalSeed, Set.of(), controllers.apply(c)).judged(),
+                        differs, watch);
+                verdicts.add(DifferentialOracle.judge(base, run.result(), c, true, differs.differing(), differs.first()));
+                commands.add(run.commands());
             }
         }
-        return new JudgedMap(base, verdicts);
+        return new JudgedMap(base, verdicts, commands);
     }
 
     /**

@@ -271,7 +271,11 @@ final class SimulateCommand implements Command {
         int maps = options.count("--maps", 1, MAX_MAPS).orElseThrow();
         long first = options.firstSeed("--seed", maps);
         boolean perRun = !options.has("--summary");
-        Calibration calibration = new Calibration(first, maps, !perRun, options.value("--controller").orElse("builtin"));
+        java.util.OptionalInt timeout = options.has("--tick-timeout")
+                ? java.util.OptionalInt.of(options.count("--tick-timeout", 1, Integer.MAX_VALUE).orElseThrow())
+                : java.util.OptionalInt.empty();
+        Calibration calibration = new Calibration(first, maps, !perRun, Calibration.controllerArgs(
+                options.value("--controller").orElse("builtin"), timeout));
         RunGallery gallery = null;
         if (options.value("--gallery").isPresent()) {
             Path folder = Path.of(options.value("--gallery").get());

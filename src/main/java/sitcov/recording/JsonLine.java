@@ -129,7 +129,11 @@ final class JsonLine {
         }
         String n = text.substring(start, at);
         try {
-            return whole ? Long.valueOf(n) : Double.valueOf(n);
+            // not a conditional expression: that would unbox both to double
+            if (whole) {
+                return Long.valueOf(n);
+            }
+            return Double.valueOf(n);
         } catch (NumberFormatException e) {
             at = start;
             throw error("not a value");

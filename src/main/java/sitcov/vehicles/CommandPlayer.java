@@ -25,9 +25,19 @@ public final class CommandPlayer implements Controller {
         this.log = log;
     }
 
-    /** A factory whose every run is driven by {@code log}. */
+    /** A factory whose every run is driven by {@code log}; its runs can be copied, as the player's state is the run's. */
     public static ControllerFactory factory(CommandLog log) {
-        return run -> new CommandPlayer(log);
+        return new ControllerFactory() {
+            @Override
+            public Controller start(sitcov.control.RunStart run) {
+                return new CommandPlayer(log);
+            }
+
+            @Override
+            public boolean copyable() {
+                return true;
+            }
+        };
     }
 
     @Override

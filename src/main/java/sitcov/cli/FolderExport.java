@@ -157,8 +157,9 @@ final class FolderExport {
                                                        WorldMap map, boolean reference, long until,
                                                        ScenarioVersion version) throws IOException {
         Recording r = RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, reference)));
+        Set<Fault> faults = reference ? Set.of() : row.fault().map(Set::of).orElse(Set.of());
         return new ExportCommand.Planned(name, () -> OpenScenario.recording(RunRecording.replayed(map, r.internalSeed(),
-                r.commands(), r.stopAfter()).until(until), roadFile, version));
+                r.commands(), r.stopAfter(), faults).until(until), roadFile, version));
     }
 
     /** The row judged again; it must give what runs.csv recorded, or the export stops. */

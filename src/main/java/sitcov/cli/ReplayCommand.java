@@ -113,8 +113,8 @@ final class ReplayCommand implements Command {
             throw new UsageException("replay: cannot read the recordings of row " + row.number() + " in " + folder + ": "
                     + e.getMessage() + ".");
         }
-        out.println("Row " + row.number() + " replays from its recordings exactly as runs.csv recorded it (no controller"
-                + " ran).");
+        out.println("Row " + row.number() + " replays exactly as runs.csv recorded it, from its recorded commands (no"
+                + " controller ran).");
         RunResult base = drawn.runs().reference().result();
         String reference = OutcomeText.of(base.outcome(), base.ticks(), base.accidents());
         if (row.variant().isPresent()) {
@@ -122,7 +122,8 @@ final class ReplayCommand implements Command {
             out.println("With " + (row.fault().isPresent() ? "fault " : "variant ") + row.variant().get().id() + " ("
                     + row.variant().get().label() + "): " + OutcomeText.of(run.outcome(), run.ticks(), run.accidents())
                     + ". Verdict: " + drawn.verdict().orElseThrow());
-            out.println("The reference (same map and internal seed): " + reference);
+            out.println((row.fault().isPresent() ? "Without the fault" : "The reference") + " (its twin, same map and"
+                    + " internal seed): " + reference);
         } else {
             out.println("The reference's run: " + reference);
         }
@@ -136,7 +137,8 @@ final class ReplayCommand implements Command {
             err.println("sitcov: replay: could not write " + png + gif.map(g -> " or " + g).orElse("") + ": " + e.getMessage());
             return ExitCode.FAILURE;
         }
-        out.println("Replay drawn to " + png + (row.variant().isPresent() ? " (left the reference, right the variant)" : ""));
+        out.println("Replay drawn to " + png + (row.fault().isPresent() ? " (left without the fault, right with it)"
+                : row.variant().isPresent() ? " (left the reference, right the variant)" : ""));
         gif.ifPresent(g -> out.println("Animated in " + g));
         return ExitCode.OK;
     }

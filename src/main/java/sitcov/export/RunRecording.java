@@ -83,11 +83,13 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
 
     /**
      * A run replayed from the commands it carried out ({@code commands}), whatever controller made them,
-     * stopped after {@code stopAfter} ticks where the experiment stopped it ({@link Simulator#replay}).
+     * stopped after {@code stopAfter} ticks where the experiment stopped it ({@link Simulator#replay});
+     * {@code faults} are the seeded faults its controller had on, named in the export.
      */
-    public static RunRecording replayed(WorldMap map, long internalSeed, CommandLog commands, long stopAfter) {
+    public static RunRecording replayed(WorldMap map, long internalSeed, CommandLog commands, long stopAfter,
+                                        Set<Fault> faults) {
         Recorder recorder = new Recorder(map);
-        return of(map, internalSeed, Set.of(), Simulator.replay(map, internalSeed, commands, stopAfter, recorder).result(),
+        return of(map, internalSeed, faults, Simulator.replay(map, internalSeed, commands, stopAfter, recorder).result(),
                 recorder);
     }
 

@@ -67,8 +67,8 @@ public final class FolderRecordings {
                 was.effective() ? 1 : 0, was.firstEffectiveTick());
         FaultOutcome now = FaultOutcome.of(verdict);
         if (!was.agrees(now)) {
-            throw new IllegalArgumentException("row " + row.number() + " of " + folder + " does not replay from its"
-                    + " recordings: runs.csv holds " + was.detection() + was.newAccident().map(f -> " by " + f).orElse("")
+            throw new IllegalArgumentException("row " + row.number() + " does not replay from its recordings in " + folder
+                    + ": runs.csv holds " + was.detection() + was.newAccident().map(f -> " by " + f).orElse("")
                     + ", the replay gives " + now.detection() + now.newAccident().map(f -> " by " + f).orElse("")
                     + "; the folder or the world changed");
         }
@@ -88,9 +88,10 @@ public final class FolderRecordings {
         RunRecord replayed = Simulator.replay(map, r.internalSeed(), r.commands(), r.stopAfter(), observer);
         RunSummary now = RunSummary.of(replayed.result());
         if (r.outcome() != recorded.outcome() || r.ticks() != recorded.ticks() || !recorded.agrees(now)) {
-            throw new IllegalArgumentException("row " + row.number() + " of " + folder + " does not replay from its"
-                    + " recording " + file.getFileName() + ": runs.csv holds " + words(recorded) + ", the recording "
-                    + r.outcome() + " after " + r.ticks() + " ticks, and the replay gives " + words(now)
+            throw new IllegalArgumentException("row " + row.number() + " does not replay from its recording " + file
+                    + ": " + (key.variant() == Recording.RunKey.REFERENCE ? "the reference's" : "the variant's")
+                    + " run was recorded in runs.csv as " + words(recorded) + ", the recording says " + r.outcome()
+                    + " after " + r.ticks() + " ticks, and it replays to " + words(now)
                     + "; the folder or the world changed (was the folder written by another version of sitcov? see its"
                     + " manifest)");
         }

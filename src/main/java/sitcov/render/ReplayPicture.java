@@ -107,7 +107,8 @@ public final class ReplayPicture {
 
     /** The verdict in one line, saying where the experiment stopped the faulty run. */
     public static String verdictLine(sitcov.judge.FaultVerdict verdict, sitcov.judge.FaultyRuns length) {
-        return verdict.detection() + verdict.newAccident().map(a -> " by " + a.type() + " at tick " + a.tick()).orElse("")
+        return verdict.detection() + verdict.newAccident().map(a -> " by " + a.type() + " at tick " + a.tick())
+                .orElse(verdict.newFailure().map(f -> " by " + f + " at tick " + (verdict.faultyRun().ticks() - 1)).orElse(""))
                 + (length == sitcov.judge.FaultyRuns.UNTIL_VERDICT && verdict.newAccident()
                         .filter(a -> a.type() != sitcov.oracle.AccidentType.TIMEOUT).isPresent()
                         ? " (the experiment stopped this run there)" : ""); // a TIMEOUT is the run's own end

@@ -55,6 +55,31 @@ public final class CommandLog {
     private ControllerFailure.Kind failureKind;
     private String failureMessage;
 
+    /** Logs are equal when they hold the same commands: the same run, as far as the car is concerned. */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof CommandLog l && ticks == l.ticks && clamps == l.clamps && requests == l.requests
+                && reports == l.reports && failedAt == l.failedAt && failureKind == l.failureKind
+                && java.util.Objects.equals(failureMessage, l.failureMessage)
+                && Arrays.equals(speed, 0, ticks, l.speed, 0, ticks) && Arrays.equals(steering, 0, ticks, l.steering, 0, ticks)
+                && Arrays.equals(clampTick, 0, clamps, l.clampTick, 0, clamps)
+                && Arrays.equals(askedSpeed, 0, clamps, l.askedSpeed, 0, clamps)
+                && Arrays.equals(askedSteering, 0, clamps, l.askedSteering, 0, clamps)
+                && Arrays.equals(requestTick, 0, requests, l.requestTick, 0, requests)
+                && Arrays.equals(requestJunction, 0, requests, l.requestJunction, 0, requests)
+                && Arrays.equals(reportTick, 0, reports, l.reportTick, 0, reports)
+                && Arrays.equals(report, 0, reports, l.report, 0, reports);
+    }
+
+    @Override
+    public int hashCode() {
+        int h = ticks;
+        for (int t = 0; t < ticks; t++) {
+            h = 31 * h + Double.hashCode(speed[t]) + 17 * Double.hashCode(steering[t]);
+        }
+        return h;
+    }
+
     /** The ticks logged: each one a command, or the failure that ended the run. */
     public int ticks() {
         return ticks;

@@ -111,7 +111,7 @@ class RecordedRunsOfAControllerProgramTest {
                         "--png", dir.resolve("row-" + row.number() + ".png").toString(), "--gif",
                         dir.resolve("row-" + row.number() + ".gif").toString());
                 assertEquals(ExitCode.OK, replay.exitCode(), replay.err());
-                assertTrue(replay.out().contains("replays from its recordings exactly"), replay.out());
+                assertTrue(replay.out().contains("replays exactly as runs.csv recorded it, from its recorded commands"), replay.out());
                 assertTrue(Files.size(dir.resolve("row-" + row.number() + ".gif")) > 0);
             }
         }

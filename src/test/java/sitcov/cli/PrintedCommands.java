@@ -50,7 +50,12 @@ final class PrintedCommands {
         List<List<String>> commands = new ArrayList<>();
         for (String p : printed) {
             if (p.startsWith(JAR)) {
-                commands.add(arguments(shellWords(p.substring(JAR.length())), folder, scratch));
+                List<String> args = arguments(shellWords(p.substring(JAR.length())), folder, scratch);
+                if (args.get(0).equals("replay") && !args.contains("--png")) {
+                    // its picture goes where it is run from: here, the scratch folder rather than the checkout
+                    args.addAll(List.of("--png", scratch.resolve("replay-" + commands.size() + ".png").toString()));
+                }
+                commands.add(args);
             }
         }
         return commands;

@@ -16,10 +16,16 @@ final class RecordedRows {
     private RecordedRows() {
     }
 
+    /** Whether the row's runs are the builtin car's as the folder's experiment ran it (with its seeded fault, if any). */
+    static boolean ofTheBuiltinCar(ResultsRows.Row row) {
+        return row.config().controller().equals(ExperimentConfig.BUILTIN)
+                && row.variant().filter(v -> v instanceof Variant.Controller).isEmpty();
+    }
+
     /** Refuses a row of a folder that tested another controller: these commands run the builtin car. */
     static void refuseOtherController(String command, Path folder, ResultsRows.Row row) throws UsageException {
         java.util.Optional<Variant> other = row.variant().filter(v -> v instanceof Variant.Controller);
-        if (row.config().controller().equals(ExperimentConfig.BUILTIN) && other.isEmpty()) {
+        if (ofTheBuiltinCar(row)) {
             return;
         }
         // the row's own controller: a variant that is a controller of its own, else the reference (with its seeded fault)

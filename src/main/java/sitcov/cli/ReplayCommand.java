@@ -58,7 +58,7 @@ final class ReplayCommand implements Command {
 
     /** What to replay: the map, its internal seed, the fault (empty: fault-free only), and the row it must match. */
     private record Case(WorldMap map, long internalSeed, Optional<Fault> fault, FaultyRuns length,
-                        Optional<ResultsRows.Row> row, Optional<Path> recordedIn) {
+                        Optional<ResultsRows.Row> row, Optional<Path> recordedIn, boolean drawnFromRecordings) {
     }
 
     @Override
@@ -66,7 +66,7 @@ final class ReplayCommand implements Command {
         Options options = Options.parse(name(), args, Set.of("--row", "--replication", "--driver", "--map", "--fault",
                 "--seed", "--internal-seed", "--load", "--png", "--gif"), Set.of());
         Case c = options.positional().isEmpty() ? fromSeeds(options) : fromFolder(options);
-        if (c.recordedIn().isPresent()) {
+        if (c.drawnFromRecordings()) {
             return fromRecordings(c, options, out, err);
         }
         String name = "replay-" + c.map().seed() + "-" + c.internalSeed() + c.fault().map(f -> "-fault-" + f.id()).orElse("")
@@ -81,6 +81,14 @@ final class ReplayCommand implements Command {
                 err.println("sitcov: replay: row " + c.row().get().number() + " does not replay: " + differs.get()
                         + ". Was the folder written by another version of sitcov? (see its manifest)");
                 return ExitCode.FAILURE;
+            }
+            if (c.recordedIn().isPresent()) {
+                try {
+                    FolderRecordings.replay(c.recordedIn().get(), c.row().get(), c.map(), RunObserver.NONE, RunObserver.NONE);
+                } catch (IllegalArgumentException | IOException e) {
+                    err.println("sitcov: replay: " + e.getMessage() + ".");
+                    return ExitCode.FAILURE;
+                }
             }
             out.println("Row " + c.row().get().number() + " replays exactly as runs.csv recorded it.");
         }
@@ -224,13 +232,14 @@ final class ReplayCommand implements Command {
                         oneFault(options, false).map(Fault::id));
             }
             WorldMap map = ResultsRows.worldMap(folder, row.map());
-            if (FolderRecordings.has(folder, row)) {
-                return new Case(map, row.map().internalSeed(), row.fault(), row.config().faultyRuns(), Optional.of(row),
-                        Optional.of(folder));
+            boolean recorded = FolderRecordings.has(folder, row);
+            // the builtin car is always at hand and draws the faulty run on to its end, past where the
+            // experiment stopped it; its recordings are checked all the same
+            if (!recorded || RecordedRows.ofTheBuiltinCar(row)) {
+                RecordedRows.refuseOtherController("replay", folder, row);
             }
-            RecordedRows.refuseOtherController("replay", folder, row);
             return new Case(map, row.map().internalSeed(), row.fault(), row.config().faultyRuns(), Optional.of(row),
-                    Optional.empty());
+                    recorded ? Optional.of(folder) : Optional.empty(), recorded && !RecordedRows.ofTheBuiltinCar(row));
         } catch (IOException | IllegalArgumentException e) {
             throw new UsageException("replay: " + e.getMessage() + ".");
         }
@@ -244,7 +253,7 @@ final class ReplayCommand implements Command {
         }
         WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.loadRunnable("replay", load.get());
         return new Case(map, options.seed("--internal-seed").orElse(map.seed()), oneFault(options, true),
-                FaultyRuns.TO_END, Optional.empty(), Optional.empty());
+                FaultyRuns.TO_END, Optional.empty(), Optional.empty(), false);
     }
 
     private static Optional<Fault> oneFault(Options options, boolean required) throws UsageException {

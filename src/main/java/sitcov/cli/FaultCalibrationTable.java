@@ -14,6 +14,7 @@ import sitcov.judge.JudgedMap;
 import sitcov.judge.Proportion;
 import sitcov.judge.Variant;
 import sitcov.oracle.Failure;
+import sitcov.seam.SeamFault;
 import sitcov.oracle.AccidentType;
 
 /** The table {@code faults --calibrate} prints: deterministic, no timings, one row per fault. */
@@ -71,7 +72,8 @@ final class FaultCalibrationTable {
     /** The seam faults' table: one row per fault, its id {@code seam:NAME}, judged on the controller named. */
     private void printSeams(PrintStream out) {
         long background = results.stream().filter(m -> m.faultFree().failed()).count();
-        String set = String.join(",", variants.stream().map(Variant::spec).toList());
+        String set = variants.size() == SeamFault.values().length ? SeamFault.ALL
+                : String.join(",", variants.stream().map(Variant::spec).toList());
         out.printf(Locale.ROOT, "Seam fault calibration: %d maps (external seeds %d..%d, internal seed = external seed),"
                 + " controller %s%n", maps, first, first + maps - 1, controller);
         out.printf(Locale.ROOT, "Reference runs that failed: %d (%.1f%%). FOUND = a failure the reference run of the same"

@@ -45,9 +45,10 @@ class SeamControllersTest {
     void aSeamFaultChangesOnlyWhatItSaysFromItsDepartureTickAndNothingBefore() {
         WorldMap map = MapGenerator.generate(SEED);
         List<Tick> reference = run(map, f -> f);
+        SeamBoard watched = watching(map);
         int departed = 0;
         for (SeamFault fault : SeamFault.values()) {
-            long departs = departure(map, fault);
+            long departs = watched.shadow(fault).departureTick();
             List<Tick> faulty = run(map, f -> SeamControllers.switchedOn(fault, f));
             int same = (int) (departs < 0 ? Math.min(reference.size(), faulty.size()) : departs);
             assertEquals(reference.subList(0, same), faulty.subList(0, same), fault + " before tick " + departs);
@@ -79,13 +80,14 @@ class SeamControllersTest {
         assertEquals(run(map, f -> f), run(map, f -> SeamControllers.watching(List.of(SeamFault.values()), f)));
     }
 
-    /** The first tick {@code fault} would change a value, from a run that watches it. */
-    private static long departure(WorldMap map, SeamFault fault) {
-        LiveRun run = new LiveRun(map, SEED, Set.of(), SeamControllers.watching(List.of(fault), reading(new ArrayList<>())));
+    /** The board of a run that watches every seam fault from the shadows: when each would first change a value. */
+    private static SeamBoard watching(WorldMap map) {
+        LiveRun run = new LiveRun(map, SEED, Set.of(),
+                SeamControllers.watching(List.of(SeamFault.values()), reading(new ArrayList<>())));
         while (run.step()) {
             // to the end
         }
-        return SeamControllers.board(run.scene().autonomousCar().controller()).shadow(fault).departureTick();
+        return SeamControllers.board(run.scene().autonomousCar().controller());
     }
 
     private static List<Tick> run(WorldMap map, java.util.function.UnaryOperator<ControllerFactory> wrap) {

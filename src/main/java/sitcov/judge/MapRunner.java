@@ -1,10 +1,10 @@
 package sitcov.judge;
 
 import java.util.ArrayList;
+import java.util.EnumMap;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Map;
-import java.util.EnumMap;
 import java.util.Set;
 import java.util.function.Function;
 import sitcov.control.ControllerFactory;

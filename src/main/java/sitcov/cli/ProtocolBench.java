@@ -8,7 +8,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import sitcov.control.ControllerFactory;
+import sitcov.judge.BatchedRuns;
+import sitcov.judge.LiveRun;
 import sitcov.judge.RunObserver;
+import sitcov.judge.RunRecord;
 import sitcov.judge.Simulator;
 import sitcov.protocol.BatchingProxy;
 import sitcov.protocol.ControllerStartException;
@@ -126,17 +129,17 @@ final class ProtocolBench {
             int runs = Math.max(maps, batch);
             err.println("bench: the trivial controller, batch " + proxy.batch() + ": warming up (" + batch + " runs), then "
                     + runs + " runs ...");
-            for (long t : proxy.runAll(batch, (i, f) -> {
+            for (RunRecord r : BatchedRuns.run(batch, proxy, (i, f) -> {
                 WorldMap map = MapGenerator.generate(WARM_UP_SEED + i);
-                return Simulator.run(map, map.seed(), Set.of(), RunObserver.NONE, f).result().ticks();
+                return new LiveRun(map, map.seed(), Set.of(), f);
             })) {
-                sink += t;
+                sink += r.result().ticks();
             }
             long start = System.nanoTime();
             long ticks = 0;
-            for (long t : proxy.runAll(runs, (i, f) -> Simulator.run(MapGenerator.generate(i + 1), i + 1, Set.of(),
-                    RunObserver.NONE, f).result().ticks())) {
-                ticks += t;
+            for (RunRecord r : BatchedRuns.run(runs, proxy, (i, f) -> new LiveRun(MapGenerator.generate(i + 1), i + 1,
+                    Set.of(), f))) {
+                ticks += r.result().ticks();
             }
             long nanos = System.nanoTime() - start;
             sink += ticks;

@@ -8,6 +8,8 @@ import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import sitcov.faults.Fault;
+import sitcov.judge.BatchedRuns;
+import sitcov.judge.LiveRun;
 import sitcov.judge.RunObserver;
 import sitcov.judge.RunRecord;
 import sitcov.judge.Simulator;
@@ -29,6 +31,11 @@ class BatchedLockstepTest {
         return Simulator.run(map, seed, faults(i), RunObserver.NONE, controller);
     }
 
+    private static LiveRun live(int i, sitcov.control.ControllerFactory controller) {
+        long seed = i + 1;
+        return new LiveRun(MapGenerator.generate(seed), seed, faults(i), controller);
+    }
+
     private static List<RunRecord> oneAtATime() {
         List<RunRecord> records = new ArrayList<>();
         try (ProxyFactory one = Pipes.serving(BuiltinCar.FACTORY, Set.of())) {
@@ -44,7 +51,7 @@ class BatchedLockstepTest {
         List<RunRecord> single = oneAtATime();
         try (BatchingProxy four = Pipes.batching(BuiltinCar.FACTORY, 4, 4)) {
             assertEquals(4, four.batch());
-            List<RunRecord> batched = four.runAll(RUNS, BatchedLockstepTest::run);
+            List<RunRecord> batched = BatchedRuns.run(RUNS, four, BatchedLockstepTest::live);
             for (int i = 0; i < RUNS; i++) {
                 assertEquals(single.get(i), batched.get(i), "run " + i + ": " + batched.get(i).result().failureReason());
             }
@@ -56,12 +63,12 @@ class BatchedLockstepTest {
     void theSmallerBatchIsTaken() throws ControllerStartException {
         try (BatchingProxy proxy = Pipes.batching(BuiltinCar.FACTORY, 2, 8)) {
             assertEquals(2, proxy.batch());
-            assertEquals(oneAtATime(), proxy.runAll(RUNS, BatchedLockstepTest::run));
+            assertEquals(oneAtATime(), BatchedRuns.run(RUNS, proxy, BatchedLockstepTest::live));
         }
         // a controller that takes one run at a time is sent today's messages
         try (BatchingProxy proxy = Pipes.batching(BuiltinCar.FACTORY, 1, 8)) {
             assertEquals(1, proxy.batch());
-            assertEquals(oneAtATime().subList(0, 2), proxy.runAll(2, BatchedLockstepTest::run));
+            assertEquals(oneAtATime().subList(0, 2), BatchedRuns.run(2, proxy, BatchedLockstepTest::live));
         }
     }
 }

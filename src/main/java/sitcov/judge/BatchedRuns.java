@@ -22,7 +22,11 @@ public final class BatchedRuns {
     private BatchedRuns() {
     }
 
-    /** Runs {@code count} runs, {@code batch.size()} at a time; their records in the order of their index. */
+    /**
+     * Runs {@code count} runs, {@code batch.size()} at a time; their records in the order of their
+     * index. The slots are stepped in two halves: one half's observations go out, and its runs wait
+     * for their answer while the other half is stepped, so sitcov and the controller work at once.
+     */
     public static List<RunRecord> run(int count, ControllerBatch batch, RunMaker runs) {
         List<RunRecord> records = new ArrayList<>(Collections.nCopies(count, null));
         int slots = Math.min(batch.size(), count);
@@ -33,30 +37,43 @@ public final class BatchedRuns {
             index[s] = next;
             held[s] = runs.start(next++, batch.slot(s));
         }
+        int halves = slots >= 2 ? 2 : 1;
+        int[] bounds = {0, (slots + 1) / 2, slots};
+        if (halves == 1) {
+            bounds[1] = slots;
+        }
+        boolean[] sent = new boolean[halves];
         int live = slots;
         while (live > 0) {
-            boolean waiting = false;
-            for (int s = 0; s < slots; s++) {
-                while (held[s] != null) {
-                    LiveRun.Progress p = held[s].advance();
-                    if (p == LiveRun.Progress.AWAITING_COMMAND) {
-                        waiting = true;
-                        break;
-                    }
-                    if (p == LiveRun.Progress.ENDED) {
-                        records.set(index[s], held[s].record());
-                        held[s] = null;
-                        if (next < count) {
-                            index[s] = next;
-                            held[s] = runs.start(next++, batch.slot(s));
-                        } else {
-                            live--;
+            for (int h = 0; h < halves; h++) {
+                if (sent[h]) {
+                    batch.receive();
+                    sent[h] = false;
+                }
+                boolean waiting = false;
+                for (int s = bounds[h]; s < bounds[h + 1]; s++) {
+                    while (held[s] != null) {
+                        LiveRun.Progress p = held[s].advance();
+                        if (p == LiveRun.Progress.AWAITING_COMMAND) {
+                            waiting = true;
+                            break;
+                        }
+                        if (p == LiveRun.Progress.ENDED) {
+                            records.set(index[s], held[s].record());
+                            held[s] = null;
+                            if (next < count) {
+                                index[s] = next;
+                                held[s] = runs.start(next++, batch.slot(s));
+                            } else {
+                                live--;
+                            }
                         }
                     }
                 }
-            }
-            if (waiting) {
-                batch.exchange();
+                if (waiting) {
+                    batch.send();
+                    sent[h] = true;
+                }
             }
         }
         return records;

@@ -29,7 +29,7 @@ public final class BatchingProxy implements ControllerBatch, AutoCloseable {
     private final long tickTimeoutMillis;
     private final int batch;
     private final List<Slot> waiting = new ArrayList<>();
-    private final List<Observation> observations = new ArrayList<>();
+    private final java.util.ArrayDeque<Sent> outstanding = new java.util.ArrayDeque<>();
     /** The runs the last exchange answered: a broken command fails those that have not read theirs. */
     private List<Slot> answered = List.of();
     /** Why the controller failed, for the runs that observe after it did. */
@@ -86,27 +86,50 @@ public final class BatchingProxy implements ControllerBatch, AutoCloseable {
     }
 
     @Override
-    public void exchange() {
+    public void send() {
         if (waiting.isEmpty()) {
             return;
         }
-        List<Slot> asked = List.copyOf(waiting);
+        Sent sent = new Sent(List.copyOf(waiting));
         waiting.clear();
-        answered = asked;
-        Session s = asked.get(0).session;
+        outstanding.addLast(sent);
+        Session s = sent.asked.get(0).session;
         try {
             if (batch == 1) {
-                Slot only = asked.get(0);
-                String line = s.step(only.now, tickTimeoutMillis);
+                s.sendOne(sent.asked.get(0).now, tickTimeoutMillis);
+            } else {
+                s.sendBatch(sent.observations(), sent.slots, tickTimeoutMillis);
+            }
+        } catch (ControllerFailure f) {
+            failAll(f);
+        }
+    }
+
+    @Override
+    public void receive() {
+        Sent sent = outstanding.pollFirst();
+        if (sent == null) {
+            return;
+        }
+        answered = sent.asked;
+        if (sent.asked.get(0).failure != null) {
+            return;
+        }
+        Session s = sent.asked.get(0).session;
+        long tick = sent.asked.get(0).now.tick();
+        try {
+            if (batch == 1) {
+                Slot only = sent.asked.get(0);
+                String line = s.receiveBatch(tick, tickTimeoutMillis);
                 only.line = line;
                 try {
                     only.answer(Message.parse(line), null);
                 } catch (ProtocolException e) {
-                    throw s.error("at tick " + only.now.tick() + " it wrote " + Message.shorten(line) + ": " + e.getMessage());
+                    throw s.error("at tick " + tick + " it wrote " + Message.shorten(line) + ": " + e.getMessage());
                 }
                 return;
             }
-            answerAll(s, asked);
+            answerAll(s, sent, s.receiveBatch(tick, tickTimeoutMillis));
         } catch (ControllerFailure f) {
             failAll(f);
         }
@@ -120,20 +143,19 @@ public final class BatchingProxy implements ControllerBatch, AutoCloseable {
                 slot.answer(null, f);
             }
         }
+        for (Sent sent : outstanding) {
+            for (Slot slot : sent.asked) {
+                slot.answer(null, f);
+            }
+        }
+        for (Slot slot : waiting) {
+            slot.answer(null, f);
+        }
     }
 
-    /** Sends the observations of {@code asked} (in slot order) in one message and hands out the commands. */
-    private void answerAll(Session s, List<Slot> asked) {
-        List<Slot> inOrder = new ArrayList<>(asked);
-        inOrder.sort((a, b) -> Integer.compare(a.slot, b.slot));
-        observations.clear();
-        int[] slots = new int[inOrder.size()];
-        for (int i = 0; i < inOrder.size(); i++) {
-            observations.add(inOrder.get(i).now);
-            slots[i] = inOrder.get(i).slot;
-        }
-        long tick = observations.get(0).tick();
-        String line = s.stepBatch(observations, slots, tickTimeoutMillis);
+    /** Hands out the commands of {@code line}, the answer to {@code sent}. */
+    private void answerAll(Session s, Sent sent, String line) {
+        long tick = sent.asked.get(0).now.tick();
         Message m;
         List<Object> items;
         try {
@@ -143,8 +165,8 @@ public final class BatchingProxy implements ControllerBatch, AutoCloseable {
         } catch (ProtocolException e) {
             throw s.error("at tick " + tick + " it wrote " + Message.shorten(line) + ": " + e.getMessage());
         }
-        if (items.size() != inOrder.size()) {
-            throw s.error("at tick " + tick + " it wrote " + items.size() + " commands for " + inOrder.size()
+        if (items.size() != sent.asked.size()) {
+            throw s.error("at tick " + tick + " it wrote " + items.size() + " commands for " + sent.asked.size()
                     + " observations: " + Message.shorten(line));
         }
         List<Message> commands = new ArrayList<>(items.size());
@@ -152,17 +174,41 @@ public final class BatchingProxy implements ControllerBatch, AutoCloseable {
             try {
                 Message item = m.messageAt(items, i, "items");
                 long run = item.integer("run");
-                if (run != slots[i]) {
+                if (run != sent.slots[i]) {
                     throw new ProtocolException("commands.items[" + i + "] answers run " + run + ", the observation was run "
-                            + slots[i] + "'s (commands come in the order of the observations)");
+                            + sent.slots[i] + "'s (commands come in the order of the observations)");
                 }
                 commands.add(item);
             } catch (ProtocolException e) {
                 throw s.error("at tick " + tick + " it wrote " + Message.shorten(line) + ": " + e.getMessage());
             }
         }
-        for (int i = 0; i < inOrder.size(); i++) {
-            inOrder.get(i).answer(commands.get(i), null);
+        for (int i = 0; i < sent.asked.size(); i++) {
+            sent.asked.get(i).answer(commands.get(i), null);
+        }
+    }
+
+    /** A message sent and not yet answered: its runs, in slot order. */
+    private static final class Sent {
+        final List<Slot> asked;
+        final int[] slots;
+
+        Sent(List<Slot> waiting) {
+            List<Slot> inOrder = new ArrayList<>(waiting);
+            inOrder.sort((a, b) -> Integer.compare(a.slot, b.slot));
+            this.asked = List.copyOf(inOrder);
+            this.slots = new int[inOrder.size()];
+            for (int i = 0; i < slots.length; i++) {
+                slots[i] = inOrder.get(i).slot;
+            }
+        }
+
+        List<Observation> observations() {
+            List<Observation> now = new ArrayList<>(asked.size());
+            for (Slot slot : asked) {
+                now.add(slot.now);
+            }
+            return now;
         }
     }
 
@@ -230,7 +276,10 @@ public final class BatchingProxy implements ControllerBatch, AutoCloseable {
                 if (now != observation) {
                     observe(observation);
                 }
-                exchange();
+                send();
+                while (command == null && failure == null && !outstanding.isEmpty()) {
+                    receive();
+                }
             }
             if (failure != null) {
                 throw failure;

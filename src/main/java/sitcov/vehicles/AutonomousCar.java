@@ -15,8 +15,9 @@ import sitcov.world.Dimensions;
 import sitcov.world.StartPose;
 
 /**
- * The car under test as the world has it: a body that only the world moves. Each tick, before any
- * other vehicle, it hands its controller an observation, takes back a command, carries out the
+ * The car under test as the world has it: a body that only the world moves. Each tick, at its turn
+ * among the vehicles (shuffled every tick, as every agent of one ordering is), it hands its
+ * controller an observation, takes back a command, carries out the
  * command's right-of-way requests, clamps its speed change and steering to the car's limits
  * (recording that it had to), turns, moves, and judges from the geometry whether the car now
  * stands on the Target. The controller's self-report is kept for people, never judged by.

@@ -71,4 +71,51 @@ class BatchedLockstepTest {
             assertEquals(oneAtATime().subList(0, 2), BatchedRuns.run(2, proxy, BatchedLockstepTest::live));
         }
     }
+
+    @Test
+    void aControllerThatBreaksFailsEveryWaitingRunWithItsReasonAndTheNextRunsStartAfresh()
+            throws ControllerStartException {
+        java.util.concurrent.atomic.AtomicBoolean broke = new java.util.concurrent.atomic.AtomicBoolean();
+        Pipes.Peer server = (in, out) -> new ControllerServer(BuiltinCar.FACTORY, "in-process", "test", Set.of(),
+                Wire.PROTOCOL, 4).serve(in, new java.io.FilterOutputStream(out) {
+                    private final java.io.ByteArrayOutputStream line = new java.io.ByteArrayOutputStream();
+
+                    @Override
+                    public void write(int b) throws java.io.IOException {
+                        line.write(b);
+                        if (b == '\n') {
+                            String text = line.toString(java.nio.charset.StandardCharsets.UTF_8);
+                            line.reset();
+                            // the first answer to tick 20's observations is garbage, once
+                            if (text.startsWith("{\"type\":\"commands\"") && text.contains("\"tick\":20,")
+                                    && broke.compareAndSet(false, true)) {
+                                text = "garbage\n";
+                            }
+                            out.write(text.getBytes(java.nio.charset.StandardCharsets.UTF_8));
+                            out.flush();
+                        }
+                    }
+
+                    @Override
+                    public void write(byte[] b, int off, int len) throws java.io.IOException {
+                        for (int i = 0; i < len; i++) {
+                            write(b[off + i]);
+                        }
+                    }
+                });
+        List<RunRecord> single = oneAtATime();
+        List<RunRecord> batched;
+        try (BatchingProxy four = Pipes.batching(server, 4)) {
+            batched = BatchedRuns.run(RUNS, four, BatchedLockstepTest::live);
+        }
+        assertTrue(broke.get(), "the controller broke");
+        // the four runs in progress at tick 20: two waited for the broken answer, two for the next one
+        for (int i = 0; i < 4; i++) {
+            String why = batched.get(i).result().failureReason();
+            assertTrue(why.contains("at tick 20 it wrote 'garbage'"), "run " + i + ": " + why);
+        }
+        for (int i = 4; i < RUNS; i++) {
+            assertEquals(single.get(i), batched.get(i), "run " + i + " started with a fresh controller");
+        }
+    }
 }

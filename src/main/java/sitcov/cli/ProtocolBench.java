@@ -105,6 +105,10 @@ final class ProtocolBench {
             }
             out.printf(Locale.ROOT, " (batch %d: %.1f x fewer than batch 1)%n", BATCHES[BATCHES.length - 1],
                     batched[0].cpuMicrosPerTick() / batched[BATCHES.length - 1].cpuMicrosPerTick());
+            ProtocolTiming largest = batched[BATCHES.length - 1];
+            out.printf(Locale.ROOT, "  target: batch %d >= 5 x batch 1 and >= 50000 ticks a second %s%n",
+                    BATCHES[BATCHES.length - 1], BenchCommand.verdict(largest.perSecond() >= 5 * batched[0].perSecond()
+                            && largest.perSecond() >= 50_000));
             out.println();
             out.printf(Locale.ROOT, "Runs: maps 1..%d each, the car standing at its start (5000 ticks a run) while the traffic"
                     + " moves round it. Both processes on one core: taskset -c 0 sitcov bench --protocol%n", maps);

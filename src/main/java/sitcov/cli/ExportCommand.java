@@ -37,9 +37,9 @@ final class ExportCommand implements Command {
     @Override
     public String synopsis() {
         return "--seed S --out DIR [--record [--internal-seed I] [--fault F]] [--osc 1.0|1.1|1.2|1.3]\n"
-                + "       " + Main.PROGRAM + " export --load FILE --out DIR [--record [--internal-seed I] [--fault F]] [--osc V]\n"
-                + "       " + Main.PROGRAM + " export RESULTS --row N --out DIR [--osc V]\n"
-                + "       " + Main.PROGRAM + " export RESULTS --found [--fault F] --out DIR [--osc V]";
+                + "       " + Main.LAUNCHER + " export --load FILE --out DIR [--record [--internal-seed I] [--fault F]] [--osc V]\n"
+                + "       " + Main.LAUNCHER + " export RESULTS --row N --out DIR [--osc V]\n"
+                + "       " + Main.LAUNCHER + " export RESULTS --found [--fault F] --out DIR [--osc V]";
     }
 
     @Override

@@ -123,7 +123,7 @@ final class RunCommand implements Command {
         return execute(recorder, controllers, folder, threads, "", out, err);
     }
 
-    /** A campaign (README, "Campaigns: falsifying one version"): run whole, each fault into its own sub-folder. */
+    /** A campaign (experiments/README.md, "Campaigns: falsifying one version"): run whole, each fault into its own sub-folder. */
     private int campaign(CampaignConfig campaign, Options options, int threads, PrintStream out, PrintStream err)
             throws UsageException {
         if (options.has("--shard")) {

@@ -5,8 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.FileVisitResult;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.SimpleFileVisitor;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
@@ -16,7 +19,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The documentation holds together: every relative link of every Markdown file resolves (to a file, and with a
- * {@code #anchor} to one of its headings), and every citation of a heading such as {@code faults/README.md, "The catalogue"} in the
+ * {@code #anchor} to one of its headings), and every citation of a heading such as {@code faults/README.md, "The
+ * catalogue"} in the
  * code, presets, scripts and docs, names a heading of that file (src/README.md, "Checks on the documentation").
  */
 class DocsLinksTest {
@@ -98,16 +102,26 @@ class DocsLinksTest {
         return targets;
     }
 
+    /** The repository's files with one of these endings, outside build output (target/) and git's own files. */
     private static List<Path> files(String... endings) throws IOException {
-        try (Stream<Path> all = Files.walk(ROOT)) {
-            return all.filter(Files::isRegularFile)
-                    .filter(p -> {
-                        String rel = ROOT.relativize(p).toString().replace('\\', '/');
-                        return !rel.startsWith("target/") && !rel.startsWith(".git/") && !rel.contains("/target/");
-                    })
-                    .filter(p -> Stream.of(endings).anyMatch(e -> p.getFileName().toString().endsWith(e)))
-                    .sorted()
-                    .toList();
-        }
+        List<Path> files = new ArrayList<>();
+        Files.walkFileTree(ROOT, new SimpleFileVisitor<>() {
+            @Override
+            public FileVisitResult preVisitDirectory(Path d, BasicFileAttributes attrs) {
+                String name = d.getFileName() == null ? "" : d.getFileName().toString();
+                return name.equals("target") || name.equals(".git") ? FileVisitResult.SKIP_SUBTREE : FileVisitResult.CONTINUE;
+            }
+
+            @Override
+            public FileVisitResult visitFile(Path f, BasicFileAttributes attrs) {
+                String name = f.getFileName().toString();
+                if (attrs.isRegularFile() && Stream.of(endings).anyMatch(name::endsWith)) {
+                    files.add(f);
+                }
+                return FileVisitResult.CONTINUE;
+            }
+        });
+        files.sort(null);
+        return files;
     }
 }

@@ -22,7 +22,8 @@ import sitcov.world.WorldMap;
 
 /**
  * {@code export}: a map, its situation, a recorded run or every run of a results folder that found a
- * fault, as OpenDRIVE and OpenSCENARIO files a simulator plays (src/main/java/sitcov/export/README.md, "Export to OpenDRIVE and OpenSCENARIO"). Every file is planned before any is written: an existing one stops the export
+ * fault, as OpenDRIVE and OpenSCENARIO files a simulator plays (src/main/java/sitcov/export/README.md, "Export to
+ * OpenDRIVE and OpenSCENARIO"). Every file is planned before any is written: an existing one stops the export
  * with nothing written.
  */
 final class ExportCommand implements Command {

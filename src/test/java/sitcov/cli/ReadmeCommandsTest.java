@@ -57,6 +57,19 @@ class ReadmeCommandsTest {
         assertTrue(ci.lines().anyMatch(l -> l.equals("mvn -B test")), "CI runs the README's test command: " + ci);
     }
 
+    @Test
+    void theTwentyLineControllerShownIsTheOneShipped() throws IOException {
+        String shipped = Files.readString(Path.of("experiments", "controllers", "minimal.py"), StandardCharsets.UTF_8);
+        for (Path doc : List.of(README, Path.of("experiments", "controllers", "README.md"))) {
+            String markdown = Files.readString(doc, StandardCharsets.UTF_8);
+            int start = markdown.indexOf("```python\n");
+            assertTrue(start >= 0, doc + " shows the controller");
+            int from = start + "```python\n".length();
+            assertEquals(shipped, markdown.substring(from, markdown.indexOf("```", from)), doc + " shows minimal.py as shipped");
+        }
+        assertTrue(shipped.lines().count() <= 20, "twenty lines at most");
+    }
+
     /** Why a README line does not run as printed, or null when it does. */
     private String check(String line) throws IOException {
         String command = line.replaceFirst("\\s+#.*$", "");

@@ -1,9 +1,9 @@
 package sitcov.control;
 
 /**
- * Controllers of several runs stepped together (batched lockstep, README "The protocol"): slot s
- * holds one run at a time; its controllers are {@link DeferredController}s, which take the tick's
- * observation and wait. {@link #send} sends every observation taken since the last send in one
+ * Controllers of several runs stepped together (experiments/controllers/README.md, "Batches"):
+ * slot s holds one run at a time; its controllers are {@link DeferredController}s, which take the
+ * tick's observation and wait. {@link #send} sends every observation taken since the last send in one
  * message; {@link #receive} reads the answer to the oldest message not yet answered and hands each
  * run its command. Up to two messages may wait for their answers, so that the runs of one are
  * stepped while the controller works on the other.

@@ -14,11 +14,11 @@ import sitcov.faults.FaultSwitchboard;
 import sitcov.faults.SeededControllerFactory;
 
 /**
- * Batched lockstep (README, "The protocol"): one controller process answers up to B runs, each
- * held by a slot 0..B-1. Each run's controller takes its tick's observation and waits; {@link
- * #exchange} sends the waiting observations in one message, reads one message of commands, and
- * hands each run its own. A run's observations and commands are those it would have had alone:
- * only the grouping differs, so its record is the same whatever B. All of it happens on the one
+ * Batched lockstep (experiments/controllers/README.md, "Batches"): one controller process answers
+ * up to B runs, each held by a slot 0..B-1. Each run's controller takes its tick's observation and
+ * waits; {@link #send} sends the waiting observations in one message, {@link #receive} reads one
+ * message of commands and hands each run its own. A run's observations and commands are those it
+ * would have had alone: only the grouping differs, so its record is the same whatever B. All of it happens on the one
  * thread that steps the runs ({@code judge.BatchedRuns}), so the messages, too, come in an order
  * fixed by the seeds. A controller that fails (a timeout, an exit, a broken message) fails every
  * run waiting on it; the next run starts a fresh process. With B = 1 the messages are those of one

@@ -63,8 +63,9 @@ public final class FaultFindings {
             parts.add("found on a larger share of " + b + "'s maps: " + String.join("; ", moreB));
         }
         if (!none.isEmpty()) {
-            parts.add("no difference shown for " + ids(none) + (lowest <= highest ? String.format(Locale.ROOT,
-                    " (the test could have detected %s to %s points or more)", points(lowest), points(highest)) : ""));
+            String range = points(lowest).equals(points(highest)) ? points(lowest) : points(lowest) + " to " + points(highest);
+            parts.add("no difference shown for " + ids(none) + (lowest <= highest ? " (the test could have detected " + range
+                    + " points or more)" : ""));
         }
         if (!unreachable.isEmpty()) {
             parts.add(ids(unreachable) + " could not have been flagged, however large the difference (too few of the"

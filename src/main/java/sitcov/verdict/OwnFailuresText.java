@@ -34,12 +34,18 @@ public final class OwnFailuresText {
             if (!r.driver().equals(reference)) {
                 line += "; " + rate(r, ref) + String.format(Locale.ROOT, "; a higher rate than %s in %d replications, a"
                         + " lower one in %d, sign test p = %s: %s", reference, r.higher(), r.lower(), VerdictText.p(r.p()),
-                        r.p() < 0.05 ? (r.higher() > r.lower() ? "it finds them more often" : "it finds them less often")
-                        : "no difference in rate shown");
+                        signTestCanReach(r) ? r.p() < 0.05 ? (r.higher() > r.lower() ? "it finds them more often"
+                        : "it finds them less often") : "no difference in rate shown" : "not tested, as so few replications"
+                        + " differ that the sign test cannot reach 0.05");
             }
             out.add(line + ".");
         }
         return out;
+    }
+
+    /** Whether a sign test over the replications that differ could reach 0.05: its smallest p is 2/2^n. */
+    static boolean signTestCanReach(OwnFailures.DriverRate r) {
+        return 2 / Math.pow(2, r.higher() + r.lower()) < 0.05;
     }
 
     /**

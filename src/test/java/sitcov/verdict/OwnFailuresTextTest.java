@@ -29,6 +29,9 @@ class OwnFailuresTextTest {
                 new OwnFailures.DriverRate("random", 0, 2_000_000, 0, 0, 0, 0, 0, 1, NONE)));
         String text = String.join("\n", OwnFailuresText.lines(own, "random", 2, true));
         assertTrue(text.contains("above random's rate, which is 0 (no ratio)"), text);
+        // one replication higher, none lower: the sign test's smallest p is 2/2 = 1
+        assertTrue(text.contains("sign test p = 1.000: not tested, as so few replications differ that the sign test cannot"
+                + " reach 0.05"), text);
         assertFalse(text.contains("(×"), text);
     }
 }

@@ -97,7 +97,7 @@ final class ProtocolBench {
             }
             out.println();
             out.printf(Locale.ROOT, "Runs: maps 1..%d each, the car standing at its start (5000 ticks a run) while the traffic"
-                    + " moves round it. Both processes on one core: taskset -c 0 sitcov bench --protocol%n", maps);
+                    + " moves round it. Both processes on one core: taskset -c 0 %s bench --protocol%n", maps, Main.LAUNCHER);
             return ExitCode.OK;
         } finally {
             try {

@@ -9,7 +9,8 @@ import sitcov.faults.Fault;
 
 /**
  * A version of the reference controller that an experiment judges against it by the differential
- * oracle (README, "Variants"): one of the builtin car's seeded faults switched on in the reference,
+ * oracle (experiments/controllers/README.md, "Variants: versions of your controller, judged against it"): one of the
+ * builtin car's seeded faults switched on in the reference,
  * or another controller altogether (a program, an in-process controller, the builtin car with
  * faults planted). Every result names it by its {@link #id()} and {@link #label()}; a seeded fault
  * keeps its catalogue id and label, so folders of the builtin car read as they always did.

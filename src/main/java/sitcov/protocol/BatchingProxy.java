@@ -14,7 +14,8 @@ import sitcov.faults.FaultSwitchboard;
 import sitcov.faults.SeededControllerFactory;
 
 /**
- * Batched lockstep (README, "The protocol"): one controller process steps up to B runs together.
+ * Batched lockstep (experiments/controllers/README.md, "The protocol"): one controller process steps up to B runs
+ * together.
  * Each run is stepped on a thread of its own, in a slot 0..B-1; its controller's {@code step}
  * waits until every run of the slots that are in a run has asked for its command (or ended), and
  * the last to ask sends their observations in one message, reads one message of commands, and

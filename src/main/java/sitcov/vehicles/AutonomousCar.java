@@ -82,7 +82,8 @@ public final class AutonomousCar implements Bodied, Steppable {
     }
 
     /**
-     * The junction rule the command breaks, or null (README, "How the car moves"): it names only
+     * The junction rule the command breaks, or null (experiments/controllers/README.md, "How the car moves"): it
+     * names only
      * junctions of the map; it claims a junction only within {@link JunctionRules#CLAIM_WITHIN} of
      * its square; after its releases it holds and asks for at most {@link JunctionRules#MAX_HELD}.
      */

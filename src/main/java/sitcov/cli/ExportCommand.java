@@ -64,7 +64,7 @@ final class ExportCommand implements Command {
         Path folder = outFolder(options);
         Plan plan;
         try {
-            plan = options.positional().isEmpty() ? MapExport.plan(options, version) : FolderExport.plan(options, version);
+            plan = options.positional().isEmpty() ? MapExport.plan(options, version) : FolderExport.plan(options, version, err);
         } catch (RowMismatch e) {
             err.println("sitcov: export: " + e.getMessage() + " Nothing was written.");
             return ExitCode.FAILURE;

@@ -17,7 +17,7 @@ import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
-/** Enforces the package dependency table of the README (Map of the repository) by reading the imports of src/main. */
+/** Enforces the package dependency table of src/README.md, "Map of the repository", by reading the imports of src/main. */
 class ArchitectureTest {
 
     private static final Path MAIN = Path.of("src", "main", "java", "sitcov");
@@ -89,7 +89,7 @@ class ArchitectureTest {
             String pkg = packageOf(file);
             Set<String> allowed = ALLOWED.get(pkg);
             if (allowed == null) {
-                violations.add(file + ": package sitcov." + pkg + " is not in the dependency table of the README (Map of the repository)");
+                violations.add(file + ": package sitcov." + pkg + " is not in the dependency table of src/README.md (Map of the repository)");
                 continue;
             }
             for (String line : importLines(file)) {

@@ -15,7 +15,8 @@ import sitcov.protocol.ExecControllers;
 
 /**
  * The controller a preset, {@code --controller} or {@code versions} names — {@code builtin},
- * {@code builtin:FAULTS} or {@code exec:COMMAND ARGS…} (README, "Test your own controller") — made
+ * {@code builtin:FAULTS} or {@code exec:COMMAND ARGS…} (experiments/controllers/README.md, "Testing your own
+ * controller") — made
  * ready for an experiment's worker threads: a program is started and handshaken once before
  * anything runs, then each worker thread gets a process of its own, its stderr in
  * {@code controller-N.log} of the results folder.

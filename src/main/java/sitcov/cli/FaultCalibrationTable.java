@@ -64,9 +64,9 @@ final class FaultCalibrationTable {
         }
         out.println();
         String args = "faults --calibrate --maps " + maps + " --seed " + first + " --faults " + FaultSet.format(faults);
-        out.println("Replay a map: simulate --seed S --faults ID --png run.png (and without --faults for the fault-free run)");
-        out.println("Reproduce: " + Main.PROGRAM + " " + args);
-        out.println("       or: mvn -q compile exec:java -Dexec.args=\"" + args + "\"");
+        out.println("Replay a map: " + Main.LAUNCHER + " simulate --seed S --faults ID --png run.png"
+                + " (and without --faults for the fault-free run)");
+        out.println("Reproduce: " + Main.LAUNCHER + " " + args);
     }
 
     /** The seam faults' table: one row per fault, its id {@code seam:NAME}, judged on the controller named. */

@@ -10,9 +10,11 @@ import sitcov.seam.SeamFault;
 
 /**
  * A version of the reference controller that an experiment judges against it by the differential
- * oracle (README, "Variants"): one of the builtin car's seeded faults switched on in the reference,
- * a seam fault (a sensor or actuator fault between the reference and the world), or another controller
- * altogether (a program, an in-process controller, the builtin car with faults planted). Every result names it by its {@link #id()} and {@link #label()}; a seeded fault
+ * oracle (experiments/controllers/README.md, "Variants: versions of your controller, judged against
+ * it"): one of the builtin car's seeded faults switched on in the reference, a seam fault (a sensor
+ * or actuator fault between the reference and the world), or another controller altogether (a
+ * program, an in-process controller, the builtin car with faults planted). Every result names it
+ * by its {@link #id()} and {@link #label()}; a seeded fault
  * keeps its catalogue id and label, so folders of the builtin car read as they always did.
  */
 public sealed interface Variant {

@@ -26,7 +26,7 @@ class FaultsCommandTest {
         assertTrue(r.out().lines().anyMatch(l -> l.matches("\\s+2  waypoints-north-east\\s+100\\.0%\\s+100\\.0%\\s+100\\.0%.*")),
                 r.out());
         assertTrue(r.out().lines().anyMatch(l -> l.startsWith(" 19  oncoming-at-half-speed")), r.out());
-        assertTrue(r.out().contains("Reproduce: sitcov faults --calibrate --maps 2 --seed 1 --faults 2,19"), r.out());
+        assertTrue(r.out().contains("Reproduce: experiments/sitcov faults --calibrate --maps 2 --seed 1 --faults 2,19"), r.out());
     }
 
     @Test

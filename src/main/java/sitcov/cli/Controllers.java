@@ -38,7 +38,7 @@ final class Controllers {
         }
     }
 
-    /** Starts what {@code spec} names, handshaking a program at once; its logs go into {@code folder}. */
+    /** Starts what {@code spec} names, handshaking a program at once; its logs go into {@code folder} (null: kept nowhere). */
     static ControllerSource open(String spec, Path folder) throws UsageException {
         return open(spec, folder, "controller");
     }
@@ -115,7 +115,7 @@ final class Controllers {
         }
         AtomicInteger threads = new AtomicInteger();
         ThreadLocal<ControllerFactory> perThread = ThreadLocal.withInitial(() -> workers.worker(
-                choice instanceof ControllerChoice.Exec ? folder.resolve(logs + "-" + threads.incrementAndGet() + ".log")
+                choice instanceof ControllerChoice.Exec && folder != null ? folder.resolve(logs + "-" + threads.incrementAndGet() + ".log")
                         : null));
         return new Started(new ControllerSource() {
             @Override

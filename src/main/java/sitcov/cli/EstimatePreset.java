@@ -19,9 +19,13 @@ final class EstimatePreset {
     private EstimatePreset() {
     }
 
-    /** Whether the preset file says {@code protocol=estimate}. */
-    static boolean isEstimate(Path file) throws UsageException {
-        return "estimate".equals(properties(file).getProperty("protocol", "").strip());
+    /** Whether the preset file says {@code protocol=estimate}; a file that cannot be read is left to the suites' reader, which says why. */
+    static boolean isEstimate(Path file) {
+        try {
+            return "estimate".equals(properties(file).getProperty("protocol", "").strip());
+        } catch (UsageException e) {
+            return false;
+        }
     }
 
     static EstimateConfig read(Path file, Long seed, Integer replications, String controller) throws UsageException {

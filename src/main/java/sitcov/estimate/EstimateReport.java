@@ -108,15 +108,24 @@ public final class EstimateReport {
                     + " saw no failure.";
         }
         return String.format(Locale.ROOT, "Any failure: plain Monte Carlo %.3f%% ± %.1f%% (relative), importance sampling"
-                        + " %.3f%% ± %.1f%%; the two %s. At equal relative half-width importance sampling needs %.2fx fewer"
-                        + " ticks (%.2fx fewer runs) than plain Monte Carlo, its cross-entropy stages counted.",
+                        + " %.3f%% ± %.1f%%; the two %s. At equal relative half-width importance sampling needs %s ticks"
+                        + " (%s runs) than plain Monte Carlo, its cross-entropy stages counted.",
                 100 * mc.rate(), 100 * mc.relativeHalfWidth(), 100 * is.rate(), 100 * is.relativeHalfWidth(),
-                agree(mc, is) ? "agree within their intervals" : "DISAGREE", ticksRatio(mc, is), runsRatio(mc, is));
+                agree(mc, is) ? "agree within their intervals" : "DISAGREE", times(ticksRatio(mc, is)), times(runsRatio(mc, is)));
+    }
+
+    /** A ratio of plain Monte Carlo's cost to importance sampling's, in words. */
+    private static String times(double ratio) {
+        return ratio >= 1 ? String.format(Locale.ROOT, "%.2fx fewer", ratio)
+                : String.format(Locale.ROOT, "%.2fx more", 1 / ratio);
     }
 
     private static String shown(Estimate e) {
         if (e == null) {
             return "-";
+        }
+        if (e.failing() == 0 && e.method().equals("is")) {
+            return "0 (no failing run: no interval)";
         }
         return String.format(Locale.ROOT, "%.3f%% [%.3f, %.3f] (%d)", 100 * e.rate(), 100 * e.low(), 100 * e.high(),
                 e.failing());

@@ -6,8 +6,8 @@
 #
 # Typical use: build the untouched branch (mvn -q -B package -DskipTests), copy target/sitcov-*.jar aside,
 # record it into /tmp/base; build the changed branch, record it into /tmp/new; compare /tmp/base /tmp/new.
-# Every command has fixed seeds and thread counts; the results are the same on every machine (README,
-# Determinism). What measures the machine rather than the results is left out of the comparison: the files
+# Every command has fixed seeds and thread counts; the results are the same on every machine (src/README.md,
+# "Determinism"). What measures the machine rather than the results is left out of the comparison: the files
 # timings.csv, execution.properties and fig3-coverage-time.png, each command's stderr (progress and ETA),
 # and in stdout the wall-clock seconds and the record's own folder (rewritten as OUTDIR).
 set -euo pipefail

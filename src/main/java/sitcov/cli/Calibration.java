@@ -120,8 +120,7 @@ final class Calibration {
         listSeeds(out, "Seeds where the controller failed", controllerSeeds, failed);
         String args = "simulate --maps " + maps + " --seed " + firstSeed + (summaryOnly ? " --summary" : "")
                 + (controller.equals("builtin") ? "" : " --controller '" + controller + "'");
-        out.println("Reproduce: " + Main.PROGRAM + " " + args);
-        out.println("       or: mvn -q compile exec:java -Dexec.args=\"" + args + "\"");
+        out.println("Reproduce: " + Main.LAUNCHER + " " + args);
     }
 
     private static void listSeeds(PrintStream out, String what, List<Long> seeds, int total) {

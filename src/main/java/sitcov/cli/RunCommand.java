@@ -55,7 +55,7 @@ final class RunCommand implements Command {
     public String synopsis() {
         return "PRESET [--out DIR (default: target/results/PRESET-seedS)] [--seed MASTER] [--replications N] [--threads T] [--fork on|off]"
                 + " [--shard K/N] [--dry-run]\n"
-                + "       " + Main.PROGRAM + " run --resume DIR [--threads T] [--fork on|off]";
+                + "       " + Main.LAUNCHER + " run --resume DIR [--threads T] [--fork on|off]";
     }
 
     @Override
@@ -131,7 +131,7 @@ final class RunCommand implements Command {
         return execute(recorder, controllers, folder, threads, "", out, err);
     }
 
-    /** A campaign (README, "Campaigns: falsifying one version"): run whole, each fault into its own sub-folder. */
+    /** A campaign (experiments/README.md, "Campaigns: falsifying one version"): run whole, each fault into its own sub-folder. */
     private int campaign(CampaignConfig campaign, Options options, int threads, PrintStream out, PrintStream err)
             throws UsageException {
         if (options.has("--shard")) {
@@ -244,6 +244,10 @@ final class RunCommand implements Command {
         SummaryTable.print(out, config, recorder.summary());
         VerdictPrinter.print(out, folder);
         out.println("Results in " + folder + " (" + progress.elapsed() + " on " + threads + " threads)");
+        Path report = folder.resolve(ResultsFolder.REPORT);
+        if (Files.isRegularFile(report)) {
+            out.println("The report: " + report + " (the verdict, every table and figure on one page; open it in a browser)");
+        }
         if (ControllerFailures.of(recorder.summary().results(), config.variants()).referenceAlwaysFailed()) {
             err.println("sitcov: run: the reference controller " + config.controller() + " failed on every map (see the"
                     + " verdict and controller-N.log in " + folder + ").");

@@ -1,13 +1,16 @@
 package sitcov.judge;
 
 import java.util.ArrayList;
+import java.util.EnumMap;
 import java.util.EnumSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
+import sitcov.seam.SeamFault;
 import sitcov.world.WorldMap;
 
 /**
@@ -43,7 +46,7 @@ public final class MapRunner {
      * Judges every variant of {@code variants}, in the list's order, against the reference runs of
      * {@code reference}: a seeded fault as above (forked where it departs when it can be), another
      * controller ({@code controllers} makes it for this thread) run whole, its effect the ticks its
-     * commands differ from the reference's.
+     * commands differ from the reference's, a seam fault as {@link SeamRuns} judges it.
      */
     public static JudgedMap judgeVariants(WorldMap map, long internalSeed, List<Variant> variants, FaultyRuns length,
                                           ControllerFactory reference,
@@ -53,7 +56,13 @@ public final class MapRunner {
             return judge(map, internalSeed, seeded, length, reference);
         }
         CommandTrace trace = new CommandTrace();
-        RunResult base = Simulator.run(map, internalSeed, Set.of(), trace, reference).result();
+        List<SeamFault> seams = Variant.seamsOf(variants);
+        SeamRuns seamRuns = new SeamRuns(map, internalSeed, seams, length, reference);
+        RunResult base = seamRuns.reference(trace);
+        Map<SeamFault, Variant.Seam> seamVariants = new EnumMap<>(SeamFault.class);
+        variants.stream().filter(v -> v instanceof Variant.Seam).map(v -> (Variant.Seam) v)
+                .forEach(v -> seamVariants.put(v.fault(), v));
+        Map<SeamFault, FaultVerdict> seamVerdicts = seams.isEmpty() ? Map.of() : seamRuns.verdicts(seamVariants);
         List<FaultVerdict> verdicts = new ArrayList<>(variants.size());
         for (Variant v : variants) {
             VerdictWatch watch = length == FaultyRuns.UNTIL_VERDICT ? new VerdictWatch(base) : null;
@@ -61,6 +70,8 @@ public final class MapRunner {
                 RunRecord faulty = Simulator.drive(new LiveRun(map, internalSeed, EnumSet.of(s.fault()), reference)
                         .judged(), RunObserver.NONE, watch);
                 verdicts.add(DifferentialOracle.judge(base, faulty, s.fault()));
+            } else if (v instanceof Variant.Seam s) {
+                verdicts.add(seamVerdicts.get(s.fault()));
             } else if (v instanceof Variant.Controller c) {
                 CommandTrace.Comparison differs = trace.comparison();
                 RunResult run = Simulator.drive(new LiveRun(map, internalSeed, Set.of(), controllers.apply(c)).judged(),

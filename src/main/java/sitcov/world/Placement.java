@@ -17,7 +17,7 @@ import sitcov.geom.Vec2;
 
 /**
  * Places what stands on the roads (the generator's steps after the road tree;
- * README, "Maps and situation files"): parked cars, the Target, the
+ * src/main/java/sitcov/cli/README.md, "Maps and situation files"): parked cars, the Target, the
  * autonomous car's start and the moving cars, each by bounded tries of uniform points. A point
  * found on the last try counts (the original's off-by-one is not kept).
  */

@@ -17,7 +17,7 @@ import sitcov.geom.Vec2;
 
 /**
  * Grows the road tree of a map (the generator's first steps;
- * README, "Maps and situation files"): a first road, then T-junctions whose
+ * src/main/java/sitcov/cli/README.md, "Maps and situation files"): a first road, then T-junctions whose
  * branch roads touch only their parent, then a dead end at every free road end. All draws come
  * from the one stream it is given.
  */

@@ -33,7 +33,7 @@ class ArchitectureTest {
 
     /** Packages that compute and write text only: no drawing, no window. */
     private static final Set<String> HEADLESS = union(SIMULATION,
-            "builtin", "judge", "experiment", "drivers", "analysis", "verdict", "results", "export", "protocol");
+            "builtin", "judge", "experiment", "drivers", "analysis", "verdict", "results", "export", "protocol", "estimate");
 
     /**
      * Which sitcov packages each package may import (its own is always allowed). Every arrow points down:
@@ -68,6 +68,8 @@ class ArchitectureTest {
             Map.entry("analysis", union(SIMULATION, "judge", "experiment")),
             Map.entry("verdict", union(SIMULATION, "judge", "experiment", "analysis")),
             Map.entry("results", union(SIMULATION, "judge", "experiment", "analysis")),
+            // a failure rate estimated: runs of the generator's maps, weighted by their traced draws; stress-search's stress
+            Map.entry("estimate", union(SIMULATION, "judge", "drivers")),
             // maps, situations and recorded runs in the ASAM formats: a run of the builtin car is all it needs
             Map.entry("export", union(SIMULATION, "judge")),
             Map.entry("render", union(SIMULATION, "judge", "experiment", "results")),
@@ -77,7 +79,7 @@ class ArchitectureTest {
             Map.entry("viewer", union(SIMULATION, "judge", "experiment", "analysis", "verdict", "results", "render",
                     "figures", "report")),
             Map.entry("cli", union(SIMULATION, "judge", "experiment", "drivers", "analysis", "verdict", "results",
-                    "export", "render", "figures", "report", "viewer", "protocol", "builtin")));
+                    "export", "render", "figures", "report", "viewer", "protocol", "builtin", "estimate")));
 
     private static final Pattern SITCOV_REFERENCE = Pattern.compile("\\bsitcov\\.([a-z]+)\\.");
     private static final Pattern GUI_REFERENCE = Pattern.compile("\\b(java\\.awt|javax\\.swing)\\b");

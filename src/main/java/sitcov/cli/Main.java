@@ -40,6 +40,7 @@ public final class Main {
                 new ExportCommand(),
                 new ViewCommand(),
                 new SimulateCommand(),
+                new EstimateCommand(),
                 new MapCommand(),
                 new CoverageCommand(),
                 new FaultsCommand(),

@@ -79,6 +79,14 @@ final class RunCommand implements Command {
             throw new UsageException("run: name one preset, e.g. 'run smoke' or 'run experiments/paper-rq1.properties',"
                     + " or resume a folder with 'run --resume DIR'.");
         }
+        Path presetFile = Preset.locate(options.positional().get(0));
+        if (EstimatePreset.isEstimate(presetFile)) {
+            if (options.has("--variants") || options.has("--fork")) {
+                throw new UsageException("run: " + presetFile + " is an estimate (protocol=estimate), which takes neither"
+                        + " --variants nor --fork: drop them.");
+            }
+            return EstimateCommand.start(presetFile, options, out, err);
+        }
         Map<String, String> keys = new java.util.HashMap<>();
         options.value("--controller").ifPresent(c -> keys.put("controller", c));
         options.value("--variants").ifPresent(v -> keys.put("variants", v));
@@ -162,6 +170,10 @@ final class RunCommand implements Command {
         if (folder.toString().isEmpty() || !Files.isDirectory(folder)) {
             throw new UsageException("run: --resume " + Options.shown(folder) + " is not a folder; name the results folder"
                     + " of the run to resume.");
+        }
+        if (sitcov.estimate.EstimateFolder.isEstimate(folder)) {
+            throw new UsageException("run: " + folder + " holds an estimate, which is written whole at its end and does not"
+                    + " resume; run its preset again into a new folder (the same seeds give the same results).");
         }
         if (CampaignManifest.isCampaign(folder)) {
             return new CampaignRun(drivers, threads, fork, out, err).resume(folder);

@@ -6,6 +6,7 @@ import java.util.List;
 import sitcov.control.Channel;
 import sitcov.control.Observation;
 import sitcov.control.Vehicle;
+import sitcov.engine.ReadOnlyView;
 import sitcov.geom.Box;
 
 /**
@@ -26,8 +27,8 @@ final class Frame {
     private List<Track> pool = new ArrayList<>();
     List<Vehicle> traffic = new ArrayList<>();
     List<Box> obstacles = new ArrayList<>();
-    List<Vehicle> trafficView = new ReadOnly<>(traffic);
-    List<Box> obstaclesView = new ReadOnly<>(obstacles);
+    List<Vehicle> trafficView = new ReadOnlyView<>(traffic);
+    List<Box> obstaclesView = new ReadOnlyView<>(obstacles);
     boolean[] holds = new boolean[0];
     boolean[] wouldGrant = new boolean[0];
     double[] camera = new double[0];

@@ -2,13 +2,14 @@ package sitcov.seam;
 
 import java.util.ArrayList;
 import java.util.List;
+import sitcov.engine.ReadOnlyView;
 import sitcov.geom.Box;
 
 /** The LIDAR's obstacle list holds only the parked cars whose centre lies within a shorter range of the car's front. */
 final class ObstaclesWithin extends ObservationView {
     private double range;
     private List<Box> kept = new ArrayList<>();
-    private List<Box> view = new ReadOnly<>(kept);
+    private List<Box> view = new ReadOnlyView<>(kept);
     private long keptAt = -1;
 
     ObstaclesWithin(double range) {

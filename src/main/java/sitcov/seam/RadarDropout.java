@@ -4,13 +4,14 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.random.RandomGenerator;
 import sitcov.control.Vehicle;
+import sitcov.engine.ReadOnlyView;
 
 /** The radar reports no track at all on a share of ticks, drawn tick by tick from the fault's stream. */
 final class RadarDropout extends ObservationView {
     private RandomGenerator draws;
     private double share;
     private boolean dropping;
-    private List<Vehicle> none = new ReadOnly<>(new ArrayList<>());
+    private List<Vehicle> none = new ReadOnlyView<>(new ArrayList<>());
 
     RadarDropout(RandomGenerator draws, double share) {
         this.draws = draws;

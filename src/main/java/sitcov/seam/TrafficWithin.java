@@ -3,12 +3,13 @@ package sitcov.seam;
 import java.util.ArrayList;
 import java.util.List;
 import sitcov.control.Vehicle;
+import sitcov.engine.ReadOnlyView;
 
 /** The radar reports only the tracks whose front lies within a shorter range of the car's front. */
 final class TrafficWithin extends ObservationView {
     private double range;
     private List<Vehicle> kept = new ArrayList<>();
-    private List<Vehicle> view = new ReadOnly<>(kept);
+    private List<Vehicle> view = new ReadOnlyView<>(kept);
     private long keptAt = -1;
 
     TrafficWithin(double range) {

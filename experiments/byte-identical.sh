@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Proves a restructuring changed no output (issue 27): record what a build writes, then compare two records.
+# Proves a restructuring changed no output: record what a build writes, then compare two records.
 #
 #   experiments/byte-identical.sh record JAR OUTDIR    run the fixed commands below with JAR, into OUTDIR
 #   experiments/byte-identical.sh compare BASE NEW     compare two records byte for byte; exit 1 if any differ
@@ -48,7 +48,7 @@ record() {
     # Presets name files relative to the repository root (grid=experiments/paper-grid.txt).
     cd "$(dirname "$0")/.."
 
-    # The four commands of issue 27.
+    # The fixed commands whose output is compared.
     step smoke run smoke --out "$OUT/smoke" --threads 2
     step search-5000 run search-5000 --replications 3 --out "$OUT/search-5000" --threads 2
     step faults-calibrate faults --calibrate --maps 60 --seed 1 --threads 2

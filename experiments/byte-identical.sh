@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
-# Proves a restructuring changed no output (issue 27): record what a build writes, then compare two records.
+# Proves a restructuring changed no output: record what a build writes, then compare two records.
 #
 #   experiments/byte-identical.sh record JAR OUTDIR    run the fixed commands below with JAR, into OUTDIR
 #   experiments/byte-identical.sh compare BASE NEW     compare two records byte for byte; exit 1 if any differ
 #
 # Typical use: build the untouched branch (mvn -q -B package -DskipTests), copy target/sitcov-*.jar aside,
 # record it into /tmp/base; build the changed branch, record it into /tmp/new; compare /tmp/base /tmp/new.
-# Every command has fixed seeds and thread counts; the results are the same on every machine (README,
-# Determinism). What measures the machine rather than the results is left out of the comparison: the files
+# Every command has fixed seeds and thread counts; the results are the same on every machine (src/README.md,
+# "Determinism"). What measures the machine rather than the results is left out of the comparison: the files
 # timings.csv, execution.properties and fig3-coverage-time.png, each command's stderr (progress and ETA),
 # and in stdout the wall-clock seconds and the record's own folder (rewritten as OUTDIR).
 set -euo pipefail
@@ -48,7 +48,7 @@ record() {
     # Presets name files relative to the repository root (grid=experiments/paper-grid.txt).
     cd "$(dirname "$0")/.."
 
-    # The four commands of issue 27.
+    # The fixed commands whose output is compared.
     step smoke run smoke --out "$OUT/smoke" --threads 2
     step search-5000 run search-5000 --replications 3 --out "$OUT/search-5000" --threads 2
     step faults-calibrate faults --calibrate --maps 60 --seed 1 --threads 2

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A lane follower for sitcov's controller protocol (README, "Test your own controller").
+"""A lane follower for sitcov's controller protocol (experiments/controllers/README.md, "Testing your own controller").
 
 Standard library only. It drives from its sensors: the road-marking camera's hits (the kerb-side
 edge line on its left, the centre line on its right; sitcov drives on the left) keep it in its

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A route-planning driver for sitcov's controller protocol (README, "Test your own controller").
+"""A route-planning driver for sitcov's controller protocol (experiments/controllers/README.md, "Testing your own controller").
 
 Standard library only. Where lane_follower.py only keeps its lane, this controller drives the
 whole trip, as a controller someone would actually put under test:
@@ -69,7 +69,7 @@ from sitcov_client import serve
 
 DEBUG = os.environ.get("ROUTE_DRIVER_DEBUG") == "1"   # a line a tick on stderr: what limited the speed
 
-# --- the world (README: roads 6 m, two 3 m lanes, junction squares 6 x 6 m, car 2 x 2 m) ---
+# --- the world (roads 6 m, two 3 m lanes, junction squares 6 x 6 m, car 2 x 2 m) ---
 HALF_ROAD = 3.0
 LANE_CENTRE = 1.5            # lane centre, metres left of the road's centre line
 HALF_SQUARE = 3.0

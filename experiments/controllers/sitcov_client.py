@@ -1,7 +1,6 @@
 """A client for sitcov's controller protocol: write one function from observation to command.
 
-Standard library only. serve() speaks the protocol on stdin and stdout (README, "Test your own
-controller", "The protocol"): it answers sitcov's hello (protocol 2 when sitcov offers it, the
+Standard library only. serve() speaks the protocol on stdin and stdout (experiments/controllers/README.md, "Testing your own controller", "The protocol"): it answers sitcov's hello (protocol 2 when sitcov offers it, the
 deprecated protocol 1 otherwise), hands each run's reset to an optional hook, answers every
 observation with the command your function returns (adding "type" and, with protocol 2, the tick
 of the observation it answers), hands each run's end to an optional hook, and returns at the end of
@@ -56,7 +55,7 @@ def serve(step=None, name="controller", version="1", channels=(), sensors=("rada
     step(observation) -> command dict, called once for every observation.
     reset(message), optional: called with each run's reset (the map, "internal_seed", "faults").
     end(message), optional: called with each run's end ("outcome", "ticks").
-    channels, sensors: what every observation should carry (README, "The protocol").
+    channels, sensors: what every observation should carry (experiments/controllers/README.md, "The protocol").
     batch: the most runs it takes in one message (1: one run at a time).
     step_batch(observations) -> list of command dicts, optional: answers a batch at once (else
     step is called for each observation); without step, it answers single observations too.

@@ -17,7 +17,7 @@ import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
-/** Enforces the package dependency table of the README (Map of the repository) by reading the imports of src/main. */
+/** Enforces the package dependency table of src/README.md, "Map of the repository", by reading the imports of src/main. */
 class ArchitectureTest {
 
     private static final Path MAIN = Path.of("src", "main", "java", "sitcov");
@@ -26,14 +26,14 @@ class ArchitectureTest {
      * Not the builtin car: it is one controller among others, plugged in by those that name controllers.
      */
     private static final Set<String> SIMULATION = Set.of(
-            "engine", "geom", "stats", "world", "control", "faults", "sensors", "vehicles", "oracle", "coverage");
+            "engine", "geom", "stats", "world", "control", "faults", "sensors", "vehicles", "oracle", "coverage", "seam");
 
     /** The only packages that may name the builtin car: the command line and the controller registry. */
     private static final Set<String> PLUGGING_IN_THE_BUILTIN_CAR = Set.of("cli", "protocol");
 
     /** Packages that compute and write text only: no drawing, no window. */
     private static final Set<String> HEADLESS = union(SIMULATION,
-            "builtin", "judge", "experiment", "drivers", "analysis", "verdict", "results", "export", "protocol", "recording");
+            "builtin", "judge", "experiment", "drivers", "analysis", "verdict", "results", "export", "protocol", "estimate", "recording");
 
     /**
      * Which sitcov packages each package may import (its own is always allowed). Every arrow points down:
@@ -54,10 +54,13 @@ class ArchitectureTest {
             Map.entry("builtin", Set.of("control", "faults", "sensors", "vehicles", "world", "geom")),
             // the controller protocol and registry: a controller program behind the seam, the builtin car served over it
             Map.entry("protocol", Set.of("control", "builtin", "vehicles", "world", "faults", "engine", "geom")),
+            // seam faults: any controller's observation and command distorted between it and the world
+            Map.entry("seam", Set.of("control", "engine", "sensors", "vehicles", "world", "geom")),
             Map.entry("oracle", Set.of("control", "vehicles", "world", "engine", "geom")),
             Map.entry("coverage", Set.of("world", "geom")),
             // judging one map: a run, its twin with a fault, the verdict
-            Map.entry("judge", Set.of("engine", "geom", "stats", "world", "faults", "control", "vehicles", "oracle")),
+            Map.entry("judge", Set.of("engine", "geom", "stats", "world", "faults", "control", "vehicles", "oracle",
+                    "seam")),
             // the experiment engine: it knows drivers only through the Driver interface
             Map.entry("experiment", union(SIMULATION, "judge")),
             Map.entry("drivers", union(SIMULATION, "judge", "experiment")),
@@ -65,6 +68,8 @@ class ArchitectureTest {
             Map.entry("analysis", union(SIMULATION, "judge", "experiment")),
             Map.entry("verdict", union(SIMULATION, "judge", "experiment", "analysis")),
             Map.entry("results", union(SIMULATION, "judge", "experiment", "analysis")),
+            // a failure rate estimated: runs of the generator's maps, weighted by their traced draws; stress-search's stress
+            Map.entry("estimate", union(SIMULATION, "judge", "drivers")),
             // maps, situations and recorded runs in the ASAM formats: a run of the builtin car is all it needs
             Map.entry("export", union(SIMULATION, "judge")),
             // a results folder's recordings: the commands of its failing runs, replayed without their controller
@@ -76,7 +81,7 @@ class ArchitectureTest {
             Map.entry("viewer", union(SIMULATION, "judge", "experiment", "analysis", "verdict", "results", "render",
                     "figures", "report", "recording")),
             Map.entry("cli", union(SIMULATION, "judge", "experiment", "drivers", "analysis", "verdict", "results",
-                    "export", "render", "figures", "report", "viewer", "protocol", "builtin", "recording")));
+                    "export", "render", "figures", "report", "viewer", "protocol", "builtin", "estimate", "recording")));
 
     private static final Pattern SITCOV_REFERENCE = Pattern.compile("\\bsitcov\\.([a-z]+)\\.");
     private static final Pattern GUI_REFERENCE = Pattern.compile("\\b(java\\.awt|javax\\.swing)\\b");
@@ -88,7 +93,7 @@ class ArchitectureTest {
             String pkg = packageOf(file);
             Set<String> allowed = ALLOWED.get(pkg);
             if (allowed == null) {
-                violations.add(file + ": package sitcov." + pkg + " is not in the dependency table of the README (Map of the repository)");
+                violations.add(file + ": package sitcov." + pkg + " is not in the dependency table of src/README.md (Map of the repository)");
                 continue;
             }
             for (String line : importLines(file)) {

@@ -12,7 +12,7 @@ import sitcov.stats.LogRank;
 import sitcov.stats.Normal;
 
 /**
- * The statistics of a campaign (README, "Campaigns: falsifying one version"), from its trials: per
+ * The statistics of a campaign (experiments/README.md, "Campaigns: falsifying one version"), from its trials: per
  * fault and driver, the trials falsified and the Kaplan–Meier median ticks to the first failure; per
  * fault and pair of drivers, Fisher's exact test on the trials falsified and the log-rank test on the
  * ticks to first failure, Holm-adjusted together as one family; over all faults, per driver the

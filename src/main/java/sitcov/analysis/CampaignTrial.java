@@ -12,7 +12,7 @@ import sitcov.oracle.Failure;
 import sitcov.stats.KaplanMeier;
 
 /**
- * One trial of one driver in the campaign of one fault (README, "Campaigns: falsifying one version"):
+ * One trial of one driver in the campaign of one fault (experiments/README.md, "Campaigns: falsifying one version"):
  * falsified when a map it ran found the fault (differential oracle) within the budget.
  * {@code ticksToFailure} is the ticks spent up to and including that map, or all the ticks spent;
  * {@code survivalTicks} is what the survival analysis uses: the ticks to failure of a falsified trial,

@@ -18,7 +18,8 @@ import sitcov.stats.Descriptive;
 import sitcov.stats.DetectableDifference;
 import sitcov.stats.Dispersion;
 import sitcov.stats.FisherExact;
-import sitcov.stats.Holm;
+import sitcov.stats.BenjaminiHochberg;
+import sitcov.stats.ClosedTesting;
 import sitcov.stats.MannWhitney;
 import sitcov.stats.Tost;
 import sitcov.stats.VarghaDelaney;
@@ -39,12 +40,14 @@ import sitcov.stats.WilcoxonSignedRank;
  * </ul>
  * The one primary question the {@link AnalysisPlan} declares is tested at {@link AnalysisPlan#ALPHA}
  * as it stands (its difference and equivalence tests together, as three-sided testing allows:
- * Goeman, Solari &amp; Stijnen 2010, Statistics in Medicine 29:2117). Every other test the folder
- * reports is exploratory, and all of them — differences and equivalences of measures, differences of
- * faults, over every pair — are Holm-adjusted as one family. Tests that cannot find anything stay out
- * of the family: a measure constant in every replication of both drivers or identical to an earlier
- * measure, a fault found by neither driver or on every map by both, and a difference test whose
- * smallest attainable p is not below the level (too few replications differ; Tarone 1990's argument).
+ * Goeman, Solari &amp; Stijnen 2010, Statistics in Medicine 29:2117). Every other test is exploratory,
+ * in one of two families ({@link Families}): the measures of every pair, each measure's difference and
+ * equivalence tests together by closed testing ({@link ClosedTesting}: family-wise error 5 %); and the
+ * faults of every pair, a screening family under Benjamini–Hochberg (false-discovery rate 5 %). Tests
+ * that cannot find anything stay out of the families: a measure constant in every replication of both
+ * drivers or identical to an earlier measure, a fault found by neither driver or on every map by both,
+ * and a difference test whose smallest attainable p is not below the level (too few replications
+ * differ; Tarone 1990's argument, and Gilbert 2005's for false-discovery rates).
  */
 public final class Comparison {
     private static final double POWER = 0.8;
@@ -55,15 +58,15 @@ public final class Comparison {
     private final int replications;
     private final List<MeasureComparison> measures;
     private final List<FaultComparison> faults;
-    private final int[] family;
+    private final Families families;
 
     private Comparison(AnalysisPlan plan, int replications, List<MeasureComparison> measures,
-                       List<FaultComparison> faults, int[] family) {
+                       List<FaultComparison> faults, Families families) {
         this.plan = plan;
         this.replications = replications;
         this.measures = List.copyOf(measures);
         this.faults = List.copyOf(faults);
-        this.family = family;
+        this.families = families;
     }
 
     /** Every pair of drivers of {@code summary}, with bootstrap resamples drawn from {@code random}. */
@@ -103,21 +106,9 @@ public final class Comparison {
         return measures.stream().filter(MeasureComparison::primary).findFirst();
     }
 
-    /** Tests in the exploratory family: differences of measures, equivalences of measures, differences of faults. */
-    public int familySize() {
-        return family[0] + family[1] + family[2];
-    }
-
-    public int familyMeasureDifferences() {
-        return family[0];
-    }
-
-    public int familyEquivalences() {
-        return family[1];
-    }
-
-    public int familyFaults() {
-        return family[2];
+    /** The exploratory families' sizes: the measures' places and tests, the faults' screening tests. */
+    public Families families() {
+        return families;
     }
 
     private static void measures(PairedReplications pair, AnalysisPlan plan, RandomGenerator random,
@@ -166,11 +157,12 @@ public final class Comparison {
     private static PairedDifference paired(double[] x, double[] y, Alternative alternative, RandomGenerator random) {
         double[] d = differences(x, y);
         int differing = (int) Arrays.stream(d).filter(v -> v != 0).count();
+        int higherA = (int) Arrays.stream(d).filter(v -> v > 0).count();
         WilcoxonSignedRank.Result w = WilcoxonSignedRank.test(d, alternative);
         int lean = (int) Math.signum(w.wPlus() - w.n() * (w.n() + 1) / 4.0);
         double spread = d.length < 2 ? Double.NaN : Math.sqrt(Descriptive.variance(d));
         return new PairedDifference(x.length, Descriptive.mean(x), Descriptive.mean(y),
-                Bootstrap.pairedMeanDifference(x, y, random), spread, differing, lean, w.p(),
+                Bootstrap.pairedMeanDifference(x, y, random), spread, differing, higherA, lean, w.p(),
                 WilcoxonSignedRank.smallestP(d, alternative), Double.NaN, Double.NaN);
     }
 
@@ -197,42 +189,55 @@ public final class Comparison {
         return null;
     }
 
-    /** Holm over the exploratory family, then each test's finding. */
+    /**
+     * The two exploratory families, then each test's finding. Measures: closed testing over every
+     * measure of every pair, a measure's difference and equivalence tests taking one place ({@link
+     * ClosedTesting}), so the chance of any false claim about a measure stays at 5 %. Faults: a screening
+     * family under Benjamini–Hochberg, so that of the faults it flags at most 5 % are expected to be
+     * false discoveries.
+     */
     private static Comparison adjust(AnalysisPlan plan, int n, List<MeasureComparison> measures,
             List<FaultComparison> faults) {
-        List<Double> p = new ArrayList<>();
-        int[] differenceAt = new int[measures.size()];
-        int[] tostAt = new int[measures.size()];
-        int[] faultAt = new int[faults.size()];
-        int[] family = new int[3];
+        List<double[]> places = new ArrayList<>();
+        int[] placeOf = new int[measures.size()];
+        int differences = 0;
+        int equivalences = 0;
         for (int i = 0; i < measures.size(); i++) {
             MeasureComparison m = measures.get(i);
             boolean exploratory = m.note() == null && !m.primary();
-            differenceAt[i] = exploratory && reachable(m.paired()) ? add(p, m.paired().p(), family, 0) : -1;
-            tostAt[i] = exploratory && !Double.isNaN(m.pTost()) ? add(p, m.pTost(), family, 1) : -1;
+            double difference = exploratory && reachable(m.paired()) ? m.paired().p() : Double.NaN;
+            double equivalence = exploratory ? m.pTost() : Double.NaN;
+            differences += Double.isNaN(difference) ? 0 : 1;
+            equivalences += Double.isNaN(equivalence) ? 0 : 1;
+            placeOf[i] = Double.isNaN(difference) && Double.isNaN(equivalence) ? -1 : places.size();
+            if (placeOf[i] >= 0) {
+                places.add(new double[] {difference, equivalence});
+            }
         }
+        double[][] closed = ClosedTesting.adjust(places.toArray(double[][]::new));
+        List<Double> p = new ArrayList<>();
+        int[] faultAt = new int[faults.size()];
         for (int i = 0; i < faults.size(); i++) {
             FaultComparison f = faults.get(i);
-            faultAt[i] = f.note() == null && reachable(f.paired()) ? add(p, f.paired().p(), family, 2) : -1;
+            faultAt[i] = f.note() == null && reachable(f.paired()) ? p.size() : -1;
+            if (faultAt[i] >= 0) {
+                p.add(f.paired().p());
+            }
         }
-        double[] holm = Holm.adjust(p.stream().mapToDouble(Double::doubleValue).toArray());
-        double familyLevel = AnalysisPlan.ALPHA / Math.max(1, p.size());
+        double[] bh = BenjaminiHochberg.adjust(p.stream().mapToDouble(Double::doubleValue).toArray());
+        int discoveries = (int) Arrays.stream(bh).filter(v -> v < AnalysisPlan.ALPHA).count();
+        Families families = new Families(places.size(), differences, equivalences, p.size(), discoveries);
         List<MeasureComparison> judgedMeasures = new ArrayList<>();
         for (int i = 0; i < measures.size(); i++) {
-            judgedMeasures.add(judge(measures.get(i), differenceAt[i] < 0 ? Double.NaN : holm[differenceAt[i]],
-                    tostAt[i] < 0 ? Double.NaN : holm[tostAt[i]], familyLevel, plan));
+            double[] adjusted = placeOf[i] < 0 ? new double[] {Double.NaN, Double.NaN} : closed[placeOf[i]];
+            judgedMeasures.add(judge(measures.get(i), adjusted[0], adjusted[1], families.measureLevel(), plan));
         }
         List<FaultComparison> judgedFaults = new ArrayList<>();
         for (int i = 0; i < faults.size(); i++) {
-            judgedFaults.add(judge(faults.get(i), faultAt[i] < 0 ? Double.NaN : holm[faultAt[i]], familyLevel));
+            double q = faultAt[i] < 0 ? Double.NaN : bh[faultAt[i]];
+            judgedFaults.add(judge(faults.get(i), q, families.faultLevel(q < AnalysisPlan.ALPHA)));
         }
-        return new Comparison(plan, n, judgedMeasures, judgedFaults, family);
-    }
-
-    private static int add(List<Double> p, double value, int[] family, int kind) {
-        p.add(value);
-        family[kind]++;
-        return p.size() - 1;
+        return new Comparison(plan, n, judgedMeasures, judgedFaults, families);
     }
 
     /** Whether the signed-rank test could reach the level at all on differences of these sizes. */
@@ -269,7 +274,7 @@ public final class Comparison {
                 finding, note);
     }
 
-    private static FaultComparison judge(FaultComparison f, double pAdjusted, double familyLevel) {
+    private static FaultComparison judge(FaultComparison f, double pAdjusted, double level) {
         PairedDifference d = f.paired();
         boolean tested = !Double.isNaN(pAdjusted);
         Finding finding;
@@ -284,7 +289,7 @@ public final class Comparison {
         } else {
             finding = Finding.INCONCLUSIVE;
         }
-        PairedDifference judged = d.adjusted(pAdjusted, tested ? detectable(d, familyLevel, true) : Double.NaN);
+        PairedDifference judged = d.adjusted(pAdjusted, tested ? detectable(d, level, true) : Double.NaN);
         return new FaultComparison(f.variant(), f.driverA(), f.driverB(), judged, f.dispersionA(), f.dispersionB(),
                 f.foundA(), f.mapsA(), f.foundB(), f.mapsB(), f.pFisher(), f.oddsRatio(), f.oddsLow(), f.oddsHigh(),
                 finding, note);

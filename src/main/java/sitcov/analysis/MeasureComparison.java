@@ -6,7 +6,8 @@ import sitcov.stats.EffectSize;
 /**
  * One measure of one pair of drivers (A the earlier in the preset): the paired difference, the
  * equivalence test against the measure's margin (TOST p as tested and adjusted, and its 90 % t
- * interval), the unpaired Mann-Whitney p and Vargha–Delaney Â12 as description, and the finding;
+ * interval), the unpaired Mann-Whitney p and Vargha–Delaney Â12 as description (the paired effect size is
+ * {@link PairedDifference#superiority()}), and the finding;
  * {@code note} says why a measure was not tested. NaN marks what was not computed.
  */
 public record MeasureComparison(Measure measure, String driverA, String driverB, boolean primary,

@@ -15,7 +15,7 @@ import sitcov.world.Junction;
 import sitcov.world.Road;
 
 /**
- * The autonomous car at junctions (README, "The car under test, the traffic and the oracle"): slows
+ * The autonomous car at junctions (faults/README.md, "The car under test, the traffic and the oracle"): slows
  * on the approach, asks for the junction
  * before entering and waits at the square's edge while another vehicle holds it, then crosses
  * towards the exit it chose — exits not yet taken first, then the one nearest the Target along the

@@ -10,7 +10,7 @@ import sitcov.vehicles.Dynamics;
 import sitcov.vehicles.Lanes;
 
 /**
- * Passing parked cars (README, "The car under test, the traffic and the oracle"): seeing a parked
+ * Passing parked cars (faults/README.md, "The car under test, the traffic and the oracle"): seeing a parked
  * car ahead in its lane, the car pulls out
  * only if the oncoming lane is predicted clear for the whole manoeuvre, otherwise it waits
  * behind. It passes the whole row it can see — the LIDAR cannot see through the first car, so the

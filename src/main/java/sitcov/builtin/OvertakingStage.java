@@ -1,6 +1,6 @@
 package sitcov.builtin;
 
-/** Where the autonomous car is in passing parked cars (README, "The car under test, the traffic and the oracle"). */
+/** Where the autonomous car is in passing parked cars (faults/README.md, "The car under test, the traffic and the oracle"). */
 public enum OvertakingStage {
     NOT_OVERTAKING,
     /** Behind a parked car, waiting for the oncoming lane to clear. */

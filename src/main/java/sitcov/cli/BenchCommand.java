@@ -27,7 +27,7 @@ import sitcov.world.WorldMap;
 /**
  * {@code bench}: how fast sitcov is on this machine, on one thread, after a warm-up: simulated
  * ticks and runs per second over fault-free runs of maps 1..K, and candidate maps (layouts, what
- * the coverage driver generates per candidate) per second. Prints the speed targets (README, "Simulating one run") beside.
+ * the coverage driver generates per candidate) per second. Prints the speed targets (src/README.md, "Speed") beside.
  * The only command that reads the clock for its results: timing is its point.
  */
 final class BenchCommand implements Command {

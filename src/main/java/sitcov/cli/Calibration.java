@@ -122,8 +122,7 @@ final class Calibration {
         listSeeds(out, "Seeds that timed out", timeoutSeeds, runs - reached - failed);
         listSeeds(out, "Seeds where the controller failed", controllerSeeds, failed);
         String args = "simulate --maps " + maps + " --seed " + firstSeed + (summaryOnly ? " --summary" : "") + controller;
-        out.println("Reproduce: " + Main.PROGRAM + " " + args);
-        out.println("       or: mvn -q compile exec:java -Dexec.args=\"" + args + "\"");
+        out.println("Reproduce: " + Main.LAUNCHER + " " + args);
     }
 
     private void listSeeds(PrintStream out, String what, List<Long> seeds, int total) {

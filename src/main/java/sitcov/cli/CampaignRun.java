@@ -23,7 +23,7 @@ import sitcov.results.Manifest;
 import sitcov.results.ResultsFolder;
 
 /**
- * {@code run PRESET} for a campaign (README, "Campaigns: falsifying one version"): each fault's trials
+ * {@code run PRESET} for a campaign (experiments/README.md, "Campaigns: falsifying one version"): each fault's trials
  * run as an ordinary experiment into its own sub-folder (streamed, resumable), one fault after another,
  * then the campaign's own files are written from the sub-folders. {@code run --resume DIR} takes up a
  * killed campaign where it stopped: finished faults are kept, the interrupted one is resumed.
@@ -125,6 +125,8 @@ final class CampaignRun {
         VerdictPrinter.print(out, folder);
         out.println("Results in " + folder + " (" + Math.round((System.nanoTime() - start) / 1e9) + " s on " + threads
                 + " threads)");
+        out.println("The report: " + folder.resolve(ResultsFolder.CAMPAIGN_PAGE)
+                + " (the verdict, the tables and the survival curves on one page; open it in a browser)");
         return ExitCode.OK;
     }
 

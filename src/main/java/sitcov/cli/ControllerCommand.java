@@ -16,7 +16,8 @@ import sitcov.protocol.ProtocolException;
 
 /**
  * {@code controller builtin [--faults F] [--protocol 1|2]}: the builtin car served over the protocol
- * on stdin and stdout, as an external program would be (README, "Test your own controller"); it
+ * on stdin and stdout, as an external program would be (experiments/controllers/README.md, "Testing your own
+ * controller"); it
  * answers with protocol 2 unless told to speak the deprecated protocol 1. With
  * {@code --controller "exec:java -cp target/classes sitcov.cli.Main controller builtin"} a run gives
  * what the builtin gives in process.

@@ -15,7 +15,8 @@ import sitcov.protocol.ExecControllers;
 
 /**
  * The controller a preset, {@code --controller} or {@code versions} names — {@code builtin},
- * {@code builtin:FAULTS} or {@code exec:COMMAND ARGS…} (README, "Test your own controller") — made
+ * {@code builtin:FAULTS} or {@code exec:COMMAND ARGS…} (experiments/controllers/README.md, "Testing your own
+ * controller") — made
  * ready for an experiment's worker threads: a program is started and handshaken once before
  * anything runs, then each worker thread gets a process of its own, its stderr in
  * {@code controller-N.log} of the results folder.
@@ -37,7 +38,7 @@ final class Controllers {
         }
     }
 
-    /** Starts what {@code spec} names, handshaking a program at once; its logs go into {@code folder}. */
+    /** Starts what {@code spec} names, handshaking a program at once; its logs go into {@code folder} (null: kept nowhere). */
     static ControllerSource open(String spec, Path folder) throws UsageException {
         return open(spec, folder, "controller");
     }
@@ -114,7 +115,7 @@ final class Controllers {
         }
         AtomicInteger threads = new AtomicInteger();
         ThreadLocal<ControllerFactory> perThread = ThreadLocal.withInitial(() -> workers.worker(
-                choice instanceof ControllerChoice.Exec ? folder.resolve(logs + "-" + threads.incrementAndGet() + ".log")
+                choice instanceof ControllerChoice.Exec && folder != null ? folder.resolve(logs + "-" + threads.incrementAndGet() + ".log")
                         : null));
         return new Started(new ControllerSource() {
             @Override

@@ -22,8 +22,8 @@ import sitcov.world.WorldMap;
 
 /**
  * {@code export}: a map, its situation, a recorded run or every run of a results folder that found a
- * fault, as OpenDRIVE and OpenSCENARIO files a simulator plays (README, "Export to OpenDRIVE and
- * OpenSCENARIO"). Every file is planned before any is written: an existing one stops the export
+ * fault, as OpenDRIVE and OpenSCENARIO files a simulator plays (src/main/java/sitcov/export/README.md, "Export to
+ * OpenDRIVE and OpenSCENARIO"). Every file is planned before any is written: an existing one stops the export
  * with nothing written.
  */
 final class ExportCommand implements Command {
@@ -37,9 +37,9 @@ final class ExportCommand implements Command {
     @Override
     public String synopsis() {
         return "--seed S --out DIR [--record [--internal-seed I] [--fault F]] [--osc 1.0|1.1|1.2|1.3]\n"
-                + "       " + Main.PROGRAM + " export --load FILE --out DIR [--record [--internal-seed I] [--fault F]] [--osc V]\n"
-                + "       " + Main.PROGRAM + " export RESULTS --row N --out DIR [--osc V]\n"
-                + "       " + Main.PROGRAM + " export RESULTS --found [--fault F] --out DIR [--osc V]";
+                + "       " + Main.LAUNCHER + " export --load FILE --out DIR [--record [--internal-seed I] [--fault F]] [--osc V]\n"
+                + "       " + Main.LAUNCHER + " export RESULTS --row N --out DIR [--osc V]\n"
+                + "       " + Main.LAUNCHER + " export RESULTS --found [--fault F] --out DIR [--osc V]";
     }
 
     @Override
@@ -64,7 +64,7 @@ final class ExportCommand implements Command {
         Path folder = outFolder(options);
         Plan plan;
         try {
-            plan = options.positional().isEmpty() ? MapExport.plan(options, version) : FolderExport.plan(options, version);
+            plan = options.positional().isEmpty() ? MapExport.plan(options, version) : FolderExport.plan(options, version, err);
         } catch (RowMismatch e) {
             err.println("sitcov: export: " + e.getMessage() + " Nothing was written.");
             return ExitCode.FAILURE;

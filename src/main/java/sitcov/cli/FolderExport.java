@@ -38,7 +38,8 @@ final class FolderExport {
     private FolderExport() {
     }
 
-    static ExportCommand.Plan plan(Options options, ScenarioVersion version) throws UsageException {
+    /** {@code err} takes the progress of --found, which judges every run that found a fault again. */
+    static ExportCommand.Plan plan(Options options, ScenarioVersion version, java.io.PrintStream err) throws UsageException {
         if (options.positional().size() != 1 || options.has("--seed") || options.has("--load")
                 || options.has("--record") || options.has("--internal-seed")) {
             throw new UsageException("export: name one results folder with --row N or --found; maps (--seed, --load)"
@@ -50,7 +51,7 @@ final class FolderExport {
         }
         Path folder = Path.of(options.positional().get(0));
         try {
-            return options.has("--row") ? row(folder, options, version) : found(folder, options, version);
+            return options.has("--row") ? row(folder, options, version) : found(folder, options, version, err);
         } catch (IOException | IllegalArgumentException e) {
             throw new UsageException("export: " + e.getMessage() + ".");
         }
@@ -90,8 +91,8 @@ final class FolderExport {
                 + String.join(", ", files.stream().map(ExportCommand.Planned::name).toList()) + ".");
     }
 
-    private static ExportCommand.Plan found(Path folder, Options options, ScenarioVersion version)
-            throws UsageException, IOException {
+    private static ExportCommand.Plan found(Path folder, Options options, ScenarioVersion version,
+            java.io.PrintStream err) throws UsageException, IOException {
         Optional<Set<Fault>> only = options.faults("--fault");
         List<ResultsRows.Row> rows = ResultsRows.all(folder);
         if (only.isPresent() && !rows.isEmpty()) {
@@ -112,6 +113,8 @@ final class FolderExport {
         }
         List<ExportCommand.Planned> files = new ArrayList<>();
         List<String> index = new ArrayList<>(List.of(INDEX_HEADER));
+        Progress progress = new Progress(err, "export: found runs judged again", found.size(),
+                err == System.err && System.console() != null, System::nanoTime);
         for (ResultsRows.Row row : found) {
             String base = "row-" + row.number();
             WorldMap map = ResultsRows.worldMap(folder, row.map());
@@ -120,6 +123,7 @@ final class FolderExport {
             if (FolderRecordings.has(folder, row)) {
                 FaultVerdict verdict = replayed(folder, row, map).verdict().orElseThrow();
                 index.add(indexLine(row, verdict, base));
+                progress.done(index.size() - 1);
                 Optional<Accident> failure = verdict.newAccident();
                 long until = failure.map(a -> a.tick() + AFTER_FAILURE_TICKS).orElse(Long.MAX_VALUE);
                 files.add(fromRecording(base + "-run.xosc", base + ".xodr", folder, row, map, false, until, version));
@@ -128,6 +132,7 @@ final class FolderExport {
             RecordedRows.refuseOtherController("export", folder, row);
             JudgedMap judged = checked(row, map);
             index.add(indexLine(row, judged.verdicts().get(0), base));
+            progress.done(index.size() - 1);
             long failure = judged.verdicts().get(0).newAccident().orElseThrow().tick();
             files.add(new ExportCommand.Planned(base + "-run.xosc", () -> OpenScenario.recording(
                     RunRecording.of(map, row.map().internalSeed(), Set.of(row.fault().orElseThrow()), BuiltinCar.FACTORY)

@@ -13,8 +13,14 @@ import sitcov.drivers.Drivers;
  * directly with their own streams and read the exit code from.
  */
 public final class Main {
+    /** The program's name, before its messages. */
     static final String PROGRAM = "sitcov";
-    private static final String HELP_HINT = "Run 'sitcov --help' for usage.";
+    /**
+     * How a user starts sitcov from the repository's root: the launcher script, which builds the jar when it is
+     * missing or stale and runs it. Every usage line and every command sitcov prints for a user names it.
+     */
+    static final String LAUNCHER = "experiments/sitcov";
+    private static final String HELP_HINT = "Run '" + LAUNCHER + " --help' for usage.";
 
     private final Map<String, Command> commands = new LinkedHashMap<>();
 
@@ -34,6 +40,7 @@ public final class Main {
                 new ExportCommand(),
                 new ViewCommand(),
                 new SimulateCommand(),
+                new EstimateCommand(),
                 new MapCommand(),
                 new CoverageCommand(),
                 new FaultsCommand(),
@@ -111,23 +118,22 @@ public final class Main {
         out.println(PROGRAM + " " + Version.current()
                 + " - situation-coverage testing of a simulated autonomous car");
         out.println();
-        out.println("Usage: " + PROGRAM + " [COMMAND [OPTIONS]]");
-        out.println("       " + PROGRAM + " --help | --version");
+        out.println("Usage: " + LAUNCHER + " [COMMAND [OPTIONS]]");
+        out.println("       " + LAUNCHER + " --help | --version");
         out.println();
-        out.println("With no command, runs the paper's comparison (run paper-rq1).");
+        out.println("With no command, runs the paper's comparison (run paper-rq1), as mvn -q compile exec:java does.");
         out.println();
         out.println("Commands:");
         out.print(commands.values().stream()
                 .map(c -> String.format("  %-" + width + "s  %s%n", c.name(), c.summary()))
                 .collect(Collectors.joining()));
         out.println();
-        out.println("Run '" + PROGRAM + " COMMAND --help' for a command's options.");
-        out.println("From Maven: mvn -q compile exec:java -Dexec.args=\"COMMAND OPTIONS\"");
+        out.println("Run '" + LAUNCHER + " COMMAND --help' for a command's options.");
         out.println("Exit codes: 0 done, 1 failed, 2 bad input.");
     }
 
     private static void printCommandHelp(Command command, PrintStream out) {
-        out.println("Usage: " + PROGRAM + " " + command.name()
+        out.println("Usage: " + LAUNCHER + " " + command.name()
                 + (command.synopsis().isEmpty() ? "" : " " + command.synopsis()));
         out.println();
         out.println(command.summary());

@@ -46,6 +46,9 @@ final class MergeCommand implements Command {
                 throw new UsageException("merge: " + s + " is not a folder; name the results folders of run --shard.");
             }
         }
+        if (sitcov.estimate.EstimateFolder.isEstimate(shards.get(0))) {
+            return mergeEstimates(shards, target, out, err);
+        }
         try {
             Summary summary = ShardMerger.merge(shards, target, RunCommand.execution(1), BuiltinCar.FACTORY);
             Manifest merged = Manifest.read(target);
@@ -60,6 +63,21 @@ final class MergeCommand implements Command {
             err.println("sitcov: merge: could not write " + target + ": " + IoReason.of(e, target) + ".");
             return ExitCode.FAILURE;
         }
+        out.println("Merged " + shards.size() + " shards into " + target);
+        return ExitCode.OK;
+    }
+
+    /** The shards of an estimate (experiments/estimate.md): their samples joined, the estimates made again. */
+    private static int mergeEstimates(List<Path> shards, Path target, PrintStream out, PrintStream err) throws UsageException {
+        try {
+            sitcov.estimate.EstimateFolder.merge(shards, target).text().forEach(out::println);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("merge: " + e.getMessage() + ".");
+        } catch (IOException e) {
+            err.println("sitcov: merge: could not write " + target + ": " + IoReason.of(e, target) + ".");
+            return ExitCode.FAILURE;
+        }
+        out.println();
         out.println("Merged " + shards.size() + " shards into " + target);
         return ExitCode.OK;
     }

@@ -105,7 +105,7 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
         return new Preset(file, config(p, file, masterSeedOverride, drivers), null);
     }
 
-    /** A campaign (README, "Campaigns: falsifying one version"): the suites' own keys are refused, not ignored. */
+    /** A campaign (experiments/README.md, "Campaigns: falsifying one version"): the suites' own keys are refused, not ignored. */
     private static CampaignConfig campaign(Properties p, Path file, Long masterSeedOverride, Drivers known)
             throws UsageException {
         for (String key : p.stringPropertyNames()) {

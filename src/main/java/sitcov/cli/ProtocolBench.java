@@ -8,7 +8,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import sitcov.control.ControllerFactory;
+import sitcov.judge.BatchedRuns;
+import sitcov.judge.LiveRun;
 import sitcov.judge.RunObserver;
+import sitcov.judge.RunRecord;
 import sitcov.judge.Simulator;
 import sitcov.protocol.BatchingProxy;
 import sitcov.protocol.ControllerStartException;
@@ -83,21 +86,32 @@ final class ProtocolBench {
             cpuLine(out, "  CPU a tick, sitcov + controller", lean.cpuMicrosPerTick());
             protocolLine(out, "protocol ticks per second, radar+obstacles", radar.perSecond(), "the builtin car's sensors");
             cpuLine(out, "  CPU a tick, sitcov + controller", radar.cpuMicrosPerTick());
-            double[] batched = new double[BATCHES.length];
+            ProtocolTiming[] batched = new ProtocolTiming[BATCHES.length];
             for (int b = 0; b < BATCHES.length; b++) {
                 // batch 1 timed again here, the JIT as warm as for the others
                 batched[b] = BATCHES[b] == 1 ? protocolTicksPerSecond(List.of("python3", script.toString()), maps, err)
-                        .perSecond() : batchedTicksPerSecond(List.of("python3", script.toString()), maps, BATCHES[b], err);
+                        : batchedTicksPerSecond(List.of("python3", script.toString()), maps, BATCHES[b], err);
             }
             out.println();
             out.printf(Locale.ROOT, "Batched lockstep, no sensors (B runs a round trip, max(K, B) runs):%n");
             for (int b = 0; b < BATCHES.length; b++) {
-                out.printf(Locale.ROOT, "  batch %d: %.0f ticks a second%s%n", BATCHES[b], batched[b],
-                        b == 0 ? "" : String.format(Locale.ROOT, "  (%.1f x batch 1)", batched[b] / batched[0]));
+                out.printf(Locale.ROOT, "  batch %d: %.0f ticks a second%s%n", BATCHES[b], batched[b].perSecond(),
+                        b == 0 ? "" : String.format(Locale.ROOT, "  (%.1f x batch 1)", batched[b].perSecond()
+                                / batched[0].perSecond()));
             }
+            out.printf(Locale.ROOT, "  CPU a tick, sitcov + controller:");
+            for (int b = 0; b < BATCHES.length; b++) {
+                out.printf(Locale.ROOT, "%s batch %d %.1f µs", b == 0 ? "" : ",", BATCHES[b], batched[b].cpuMicrosPerTick());
+            }
+            out.printf(Locale.ROOT, " (batch %d: %.1f x fewer than batch 1)%n", BATCHES[BATCHES.length - 1],
+                    batched[0].cpuMicrosPerTick() / batched[BATCHES.length - 1].cpuMicrosPerTick());
+            ProtocolTiming largest = batched[BATCHES.length - 1];
+            out.printf(Locale.ROOT, "  target: batch %d >= 5 x batch 1 and >= 50000 ticks a second %s%n",
+                    BATCHES[BATCHES.length - 1], BenchCommand.verdict(largest.perSecond() >= 5 * batched[0].perSecond()
+                            && largest.perSecond() >= 50_000));
             out.println();
             out.printf(Locale.ROOT, "Runs: maps 1..%d each, the car standing at its start (5000 ticks a run) while the traffic"
-                    + " moves round it. Both processes on one core: taskset -c 0 sitcov bench --protocol%n", maps);
+                    + " moves round it. Both processes on one core: taskset -c 0 %s bench --protocol%n", maps, Main.LAUNCHER);
             return ExitCode.OK;
         } finally {
             try {
@@ -118,29 +132,31 @@ final class ProtocolBench {
                 1e6 / perSecond));
     }
 
-    /** Protocol ticks a second with runs stepped {@code batch} at a time over one process: max(maps, batch) runs. */
-    private static double batchedTicksPerSecond(List<String> command, int maps, int batch, PrintStream err)
+    /** Protocol ticks a second, and CPU a tick, with runs stepped {@code batch} at a time over one process: max(maps, batch) runs. */
+    private static ProtocolTiming batchedTicksPerSecond(List<String> command, int maps, int batch, PrintStream err)
             throws UsageException {
         try (ExecControllers controllers = new ExecControllers(command, Version.current());
              BatchingProxy proxy = controllers.batched(null, batch)) {
             int runs = Math.max(maps, batch);
             err.println("bench: the trivial controller, batch " + proxy.batch() + ": warming up (" + batch + " runs), then "
                     + runs + " runs ...");
-            for (long t : proxy.runAll(batch, (i, f) -> {
+            for (RunRecord r : BatchedRuns.run(batch, proxy, (i, f) -> {
                 WorldMap map = MapGenerator.generate(WARM_UP_SEED + i);
-                return Simulator.run(map, map.seed(), Set.of(), RunObserver.NONE, f).result().ticks();
+                return new LiveRun(map, map.seed(), Set.of(), f);
             })) {
-                sink += t;
+                sink += r.result().ticks();
             }
+            long cpuBefore = cpuNanos();
             long start = System.nanoTime();
             long ticks = 0;
-            for (long t : proxy.runAll(runs, (i, f) -> Simulator.run(MapGenerator.generate(i + 1), i + 1, Set.of(),
-                    RunObserver.NONE, f).result().ticks())) {
-                ticks += t;
+            for (RunRecord r : BatchedRuns.run(runs, proxy, (i, f) -> new LiveRun(MapGenerator.generate(i + 1), i + 1,
+                    Set.of(), f))) {
+                ticks += r.result().ticks();
             }
             long nanos = System.nanoTime() - start;
+            long cpu = cpuNanos() - cpuBefore;
             sink += ticks;
-            return ticks / (nanos / 1e9);
+            return new ProtocolTiming(ticks / (nanos / 1e9), cpu / 1e3 / ticks);
         } catch (ControllerStartException e) {
             throw new UsageException("bench: --protocol needs python3 on the PATH: " + e.getMessage() + ".");
         }

@@ -24,6 +24,12 @@ final class RecordedRows {
 
     /** Refuses a row of a folder that tested another controller: these commands run the builtin car. */
     static void refuseOtherController(String command, Path folder, ResultsRows.Row row) throws UsageException {
+        java.util.Optional<Variant> seam = row.variant().filter(v -> v instanceof Variant.Seam);
+        if (seam.isPresent()) {
+            throw new UsageException(command + ": row " + row.number() + " of " + folder + " ran " + seam.get().spec()
+                    + ", a seam fault of the controller " + row.config().controller() + ", and " + command + " runs the"
+                    + " builtin car without seam faults; pick a row of the reference or of another variant.");
+        }
         java.util.Optional<Variant> other = row.variant().filter(v -> v instanceof Variant.Controller);
         if (ofTheBuiltinCar(row)) {
             return;

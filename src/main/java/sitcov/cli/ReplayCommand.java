@@ -46,9 +46,9 @@ final class ReplayCommand implements Command {
     @Override
     public String synopsis() {
         return "DIR --row N [--png FILE] [--gif FILE]\n"
-                + "       " + Main.PROGRAM + " replay DIR --replication R --driver D --map I [--fault F] [--png FILE]\n"
-                + "       " + Main.PROGRAM + " replay --seed S [--internal-seed I (default: S)] --fault F [--png FILE] [--gif FILE]\n"
-                + "       " + Main.PROGRAM + " replay --load FILE [--internal-seed I] --fault F [--png FILE] [--gif FILE]";
+                + "       " + Main.LAUNCHER + " replay DIR --replication R --driver D --map I [--fault F] [--png FILE]\n"
+                + "       " + Main.LAUNCHER + " replay --seed S [--internal-seed I (default: S)] --fault F [--png FILE] [--gif FILE]\n"
+                + "       " + Main.LAUNCHER + " replay --load FILE [--internal-seed I] --fault F [--png FILE] [--gif FILE]";
     }
 
     @Override

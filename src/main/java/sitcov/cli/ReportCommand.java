@@ -47,7 +47,8 @@ final class ReportCommand implements Command {
         }
         try {
             if (campaign) {
-                // a campaign's own files, written again from its faults' sub-folders (README, "Campaigns")
+                // a campaign's own files, written again from its faults' sub-folders (experiments/README.md,
+                // "Campaigns: falsifying one version")
                 CampaignFinisher.report(folder);
             } else {
                 Manifest manifest = Manifest.read(folder);

@@ -55,7 +55,7 @@ final class RunCommand implements Command {
     public String synopsis() {
         return "PRESET [--out DIR (default: target/results/PRESET-seedS)] [--seed MASTER] [--replications N] [--threads T] [--fork on|off]"
                 + " [--shard K/N] [--dry-run]\n"
-                + "       " + Main.PROGRAM + " run --resume DIR [--threads T] [--fork on|off]";
+                + "       " + Main.LAUNCHER + " run --resume DIR [--threads T] [--fork on|off]";
     }
 
     @Override
@@ -78,6 +78,14 @@ final class RunCommand implements Command {
         if (options.positional().size() != 1) {
             throw new UsageException("run: name one preset, e.g. 'run smoke' or 'run experiments/paper-rq1.properties',"
                     + " or resume a folder with 'run --resume DIR'.");
+        }
+        Path presetFile = Preset.locate(options.positional().get(0));
+        if (EstimatePreset.isEstimate(presetFile)) {
+            if (options.has("--variants") || options.has("--fork")) {
+                throw new UsageException("run: " + presetFile + " is an estimate (protocol=estimate), which takes neither"
+                        + " --variants nor --fork: drop them.");
+            }
+            return EstimateCommand.start(presetFile, options, out, err);
         }
         Map<String, String> keys = new java.util.HashMap<>();
         options.value("--controller").ifPresent(c -> keys.put("controller", c));
@@ -123,7 +131,7 @@ final class RunCommand implements Command {
         return execute(recorder, controllers, folder, threads, "", out, err);
     }
 
-    /** A campaign (README, "Campaigns: falsifying one version"): run whole, each fault into its own sub-folder. */
+    /** A campaign (experiments/README.md, "Campaigns: falsifying one version"): run whole, each fault into its own sub-folder. */
     private int campaign(CampaignConfig campaign, Options options, int threads, PrintStream out, PrintStream err)
             throws UsageException {
         if (options.has("--shard")) {
@@ -162,6 +170,10 @@ final class RunCommand implements Command {
         if (folder.toString().isEmpty() || !Files.isDirectory(folder)) {
             throw new UsageException("run: --resume " + Options.shown(folder) + " is not a folder; name the results folder"
                     + " of the run to resume.");
+        }
+        if (sitcov.estimate.EstimateFolder.isEstimate(folder)) {
+            throw new UsageException("run: " + folder + " holds an estimate, which is written whole at its end and does not"
+                    + " resume; run its preset again into a new folder (the same seeds give the same results).");
         }
         if (CampaignManifest.isCampaign(folder)) {
             return new CampaignRun(drivers, threads, fork, out, err).resume(folder);
@@ -232,6 +244,10 @@ final class RunCommand implements Command {
         SummaryTable.print(out, config, recorder.summary());
         VerdictPrinter.print(out, folder);
         out.println("Results in " + folder + " (" + progress.elapsed() + " on " + threads + " threads)");
+        Path report = folder.resolve(ResultsFolder.REPORT);
+        if (Files.isRegularFile(report)) {
+            out.println("The report: " + report + " (the verdict, every table and figure on one page; open it in a browser)");
+        }
         if (ControllerFailures.of(recorder.summary().results(), config.variants()).referenceAlwaysFailed()) {
             err.println("sitcov: run: the reference controller " + config.controller() + " failed on every map (see the"
                     + " verdict and controller-N.log in " + folder + ").");

@@ -13,7 +13,10 @@ import java.util.stream.Collectors;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Activation;
 import sitcov.faults.Fault;
+import sitcov.judge.BatchedRuns;
+import sitcov.judge.LiveRun;
 import sitcov.judge.RunObserver;
+import sitcov.judge.RunRecord;
 import sitcov.judge.RunRecord;
 import sitcov.judge.Simulator;
 import sitcov.oracle.Accident;
@@ -293,8 +296,8 @@ final class SimulateCommand implements Command {
         Progress progress = new Progress(err, "simulate", maps,
                 err == System.err && System.console() != null, System::nanoTime);
         // batched runs are run first, all of them; each is the run it would have been alone
-        List<RunResult> results = batched == null ? null : batched.runAll(maps, (i, f) -> Simulator.run(
-                MapGenerator.generate(first + i), first + i, Set.of(), RunObserver.NONE, f).result());
+        List<RunResult> results = batched == null ? null : BatchedRuns.run(maps, batched, (i, f) -> new LiveRun(
+                MapGenerator.generate(first + i), first + i, Set.of(), f)).stream().map(RunRecord::result).toList();
         for (int i = 0; i < maps; i++) {
             long seed = first + i;
             WorldMap map = MapGenerator.generate(seed);

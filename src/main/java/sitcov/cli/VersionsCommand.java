@@ -19,7 +19,8 @@ import sitcov.judge.VariantList;
 
 /**
  * {@code versions}: a controller's variants (its next version, a build with a planted bug) against
- * the reference controller on N maps, by the differential oracle (README, "Versions compared"). A
+ * the reference controller on N maps, by the differential oracle (experiments/controllers/README.md, "Versions
+ * compared"). A
  * thin command over an ordinary experiment: one driver ({@code random}: every map drawn is run),
  * one replication, the reference and its variants; it writes an ordinary results folder, whose
  * verdict gives each variant against the reference.

@@ -57,7 +57,7 @@ final class ViewCommand implements Command {
         Set<Fault> faults = options.faults("--faults").orElse(Set.of());
         if (GraphicsEnvironment.isHeadless()) {
             throw new UsageException("view: there is no display here; run it on a desktop, or under a virtual one"
-                    + " (xvfb-run sitcov view ...), or draw the run with 'replay --seed S --fault F --gif FILE'.");
+                    + " (xvfb-run -a " + Main.LAUNCHER + " view ...), or draw the run with 'replay --seed S --fault F --gif FILE'.");
         }
         int panes = faults.isEmpty() ? 1 : 2;
         int scale = ViewerWindow.scaleFor(ViewerWindow.usableScreen().getSize(), panes, MapRenderer.DEFAULT_SCALE);

@@ -1,8 +1,9 @@
 package sitcov.control;
 
 /**
- * The system under test: one run's driver of the car. The world calls {@link #step} once a tick,
- * before any other vehicle moves; the controller reads the observation and fills the command.
+ * The system under test: one run's driver of the car. The world calls {@link #step} once a tick, at
+ * the car's turn among the vehicles (their order is shuffled every tick, so some may have moved
+ * already); the controller reads the observation and fills the command.
  * Implementations: the builtin car (its faults are its variants) and a program speaking the
  * JSON-Lines protocol.
  */

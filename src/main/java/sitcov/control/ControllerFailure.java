@@ -3,7 +3,7 @@ package sitcov.control;
 /**
  * A controller that could not give this tick's command: it gave no answer in time, or it exited,
  * wrote garbage or a malformed command. The run ends with the matching outcome; the experiment goes
- * on (README, "Test your own controller").
+ * on (experiments/controllers/README.md, "Testing your own controller").
  */
 public final class ControllerFailure extends RuntimeException {
     /** What went wrong, as the run's outcome names it. */

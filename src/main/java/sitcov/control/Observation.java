@@ -6,7 +6,8 @@ import sitcov.world.RoadNetwork;
 import sitcov.world.Target;
 
 /**
- * What the car under test observes in one tick (README, "Test your own controller"): its own pose
+ * What the car under test observes in one tick (experiments/controllers/README.md, "Testing your own controller"):
+ * its own pose
  * and speed (odometry), the road map and the Target it navigates by, the objects its sensors report
  * within {@link #SENSOR_RANGE} (other vehicles as radar tracks, parked cars as LIDAR obstacles), the
  * standard camera's and LIDAR's raw hits, the junctions' right-of-way, and any ground-truth channel

@@ -5,7 +5,7 @@ import sitcov.geom.Compass;
 /**
  * What a controller may say about itself in a tick: which manoeuvre it believes it is in and which
  * behaviour set its speed and steering. Kept in the telemetry for people reading a run; the oracle
- * never judges by it (README, "What the oracle judges").
+ * never judges by it (experiments/controllers/README.md, "What the oracle judges").
  */
 public final class SelfReport {
     private boolean overtaking;

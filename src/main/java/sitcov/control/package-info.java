@@ -1,5 +1,6 @@
 /**
- * The seam between the world and the controller under test (README, "Test your own controller").
+ * The seam between the world and the controller under test (experiments/controllers/README.md, "Testing your own
+ * controller").
  * Each tick the world hands a {@link sitcov.control.Controller} an {@link sitcov.control.Observation}
  * (its sensors, its navigation knowledge, the right-of-way signals and any ground-truth channels it
  * asked for) and takes back a {@link sitcov.control.Command} (a speed change and a steering angle,

@@ -10,7 +10,7 @@ import sitcov.world.Road;
 import sitcov.world.Target;
 
 /**
- * The paper's three situation criteria (README, "Situation coverage"), measured on a layout in metres. A
+ * The paper's three situation criteria (experiments/README.md, "Situation coverage"), measured on a layout in metres. A
  * missing element gives 200, the width of the world, as in the original.
  */
 public enum Criterion {

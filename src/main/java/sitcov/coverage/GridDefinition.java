@@ -37,7 +37,8 @@ public record GridDefinition(List<Criterion> criteria, List<Bins> bins) {
     }
 
     /**
-     * The paper's 6×6×6 grid (README, "Situation coverage"; the same as experiments/paper-grid.txt), with a
+     * The paper's 6×6×6 grid (experiments/README.md, "Situation coverage"; the same as experiments/paper-grid.txt),
+     * with a
      * value outside every bin counted as invalid.
      */
     public static GridDefinition paper() {

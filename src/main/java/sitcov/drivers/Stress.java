@@ -11,16 +11,16 @@ import sitcov.oracle.Margins;
  * to a parked car, 1 m to a moving car, 0.2 m to the road's edge, 0.05 m to the centre line, 4700
  * ticks left when the Target is reached. Negative exactly when the run had an accident.
  */
-final class Stress {
+public final class Stress {
     private static final double[] UNIT = {1.0, 1.0, 0.2, 0.05, 4700};
     /** Stress at which a search stops telling failures apart: every failure is as good as any other. */
-    static final double FAILED = -1;
+    public static final double FAILED = -1;
 
     private Stress() {
     }
 
     /** The least normalised ρ of {@code margins}; infinite when none is known. */
-    static double of(Margins margins) {
+    public static double of(Margins margins) {
         double least = Double.POSITIVE_INFINITY;
         for (AccidentType t : AccidentType.values()) {
             double rho = margins.robustness(t);

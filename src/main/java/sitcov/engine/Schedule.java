@@ -26,6 +26,10 @@ public final class Schedule {
     private long nextSequence;
     /** Bumped by {@link #clear()} so a tick in progress knows to stop. */
     private long generation;
+    /** Set by {@link #pause} while an agent steps. */
+    private boolean pauseAsked;
+    /** The index in {@link #due} of the agent that paused the tick in progress, or -1. */
+    private int pausedAt = -1;
 
     public Schedule(RandomGenerator shuffle) {
         this.shuffle = shuffle;
@@ -67,11 +71,18 @@ public final class Schedule {
     }
 
     /**
-     * Runs every event of the next scheduled tick, in (ordering, shuffled) order.
+     * Runs every event of the next scheduled tick, in (ordering, shuffled) order; or, when an agent
+     * {@link #pause}d the tick in progress, goes on with it: that agent steps again, then the rest.
      *
      * @return false if there was nothing to run
      */
     public boolean step(SimState state) {
+        if (pausedAt >= 0) {
+            int from = pausedAt;
+            pausedAt = -1;
+            runDue(state, from, false);
+            return true;
+        }
         Event first = queue.peek();
         if (first == null) {
             return false;
@@ -82,13 +93,34 @@ public final class Schedule {
             due.add(queue.poll());
         }
         shuffleWithinOrderings();
+        runDue(state, 0, true);
+        return true;
+    }
+
+    /**
+     * Asked by the agent stepping now: the tick stops after its step, and the next {@link #step}
+     * steps it again and goes on from there. An agent that waits for an answer computed elsewhere
+     * (a controller answering several runs in one message) pauses its run's tick until the answer
+     * is in; the tick then runs exactly as it would have without the pause.
+     */
+    public void pause() {
+        pauseAsked = true;
+    }
+
+    /** Whether a tick is in progress, paused by one of its agents. */
+    public boolean isPaused() {
+        return pausedAt >= 0;
+    }
+
+    /** Steps the due events from index {@code from}; the first is re-queued only when it has not been already. */
+    private void runDue(SimState state, int from, boolean queueFirst) {
         long started = generation;
-        for (int i = 0; i < due.size(); i++) {
+        for (int i = from; i < due.size(); i++) {
             Event event = due.get(i);
             if (event.stopped) {
                 continue;
             }
-            if (event.interval > 0) {
+            if (event.interval > 0 && (queueFirst || i > from)) {
                 event.tick += event.interval;
                 queue.add(event);
             }
@@ -96,15 +128,21 @@ public final class Schedule {
             if (generation != started) {
                 break;
             }
+            if (pauseAsked) {
+                pauseAsked = false;
+                pausedAt = i;
+                return;
+            }
         }
         due.clear();
-        return true;
     }
 
     /** Removes every event, including the rest of a tick in progress. Time is kept. */
     public void clear() {
         queue.clear();
         due.clear();
+        pausedAt = -1;
+        pauseAsked = false;
         generation++;
     }
 

@@ -10,8 +10,9 @@ import java.util.function.Function;
 /**
  * How a comparison's results are judged, declared before they exist: the one primary question
  * (which measure, which two drivers, which direction), tested at {@link #ALPHA} as it stands, and the
- * equivalence margin of every measure. Everything else a results folder tests is exploratory and
- * Holm-adjusted as one family. The defaults: distinct faults found, the first driver against the
+ * equivalence margin of every measure. Everything else a results folder tests is exploratory: the
+ * measures one family under closed testing, the faults a screening family under Benjamini–Hochberg
+ * ({@code sitcov.analysis.Comparison}). The defaults: distinct faults found, the first driver against the
  * second, two-sided, and each measure's {@link Measure#defaultMargin()}. Presets and manifests hold
  * it under the keys {@link #keys()} names.
  */

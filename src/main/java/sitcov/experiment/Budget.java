@@ -3,7 +3,7 @@ package sitcov.experiment;
 /**
  * What one driver may spend in a replication, by kind: the leading driver's number of candidates, or
  * a following driver's share measured on what the leader spends, in simulated ticks or in wall-clock
- * time (README, "Experiments: drivers, budgets and the results folder"). Every kind also caps the candidates a driver may draw.
+ * time (experiments/README.md, "Budgets"). Every kind also caps the candidates a driver may draw.
  */
 sealed interface Budget {
     /** The most candidates the driver may draw. */

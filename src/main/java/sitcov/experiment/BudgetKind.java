@@ -4,7 +4,7 @@ package sitcov.experiment;
  * What each later driver of a replication may spend, measured on what the first driver spent: the
  * paper's equal wall-clock time (not reproducible), or equal simulated ticks (reproducible). A
  * campaign's trials ({@code fixed-ticks}) have no first driver: each driver gets the same fixed ticks
- * and stops at its first map that finds the fault (README, "Campaigns: falsifying one version").
+ * and stops at its first map that finds the fault (experiments/README.md, "Campaigns: falsifying one version").
  */
 public enum BudgetKind {
     WALL_CLOCK("wall-clock"),

@@ -8,7 +8,7 @@ import sitcov.judge.FaultyRuns;
 import sitcov.judge.Variant;
 
 /**
- * A falsification campaign (README, "Campaigns: falsifying one version"): for each of {@code variants}
+ * A falsification campaign (experiments/README.md, "Campaigns: falsifying one version"): for each of {@code variants}
  * on its own, {@code trials} independent trials per driver, each driver of a trial spending at most
  * {@code tickBudget} simulated ticks and stopping at its first map that finds the variant. The campaign
  * of one variant is an ordinary experiment ({@link #trialsOf}) kept in a sub-folder ({@link #folderOf}).

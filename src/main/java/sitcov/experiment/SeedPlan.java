@@ -16,7 +16,7 @@ import sitcov.engine.RandomStreams;
  *   {@code mix(M, "internal-seed:situation:" + name)};</li>
  * <li>the map itself, and everything random in a run, come from the external and internal seeds'
  *   own named streams ({@link sitcov.world.MapGenerator}, {@link sitcov.engine.SimState});</li>
- * <li>the campaign of fault f (README, "Campaigns: falsifying one version") is an experiment of its
+ * <li>the campaign of fault f (experiments/README.md, "Campaigns: falsifying one version") is an experiment of its
  *   own whose master seed is {@code mix(M, "campaign-fault-" + f)}, every rule above applied to it,
  *   so the trials of different faults read different candidates;</li>
  * <li>a driver's own choices (a search's: which situation to edit, how) come from stream

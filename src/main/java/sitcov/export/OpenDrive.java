@@ -11,7 +11,8 @@ import sitcov.world.Layout;
 import sitcov.world.WorldMap;
 
 /**
- * A map's roads as an ASAM OpenDRIVE document (README, "Export to OpenDRIVE and OpenSCENARIO"):
+ * A map's roads as an ASAM OpenDRIVE document (src/main/java/sitcov/export/README.md, "Export to OpenDRIVE and
+ * OpenSCENARIO"):
  * valid against the 1.7 schema and kept to what 1.4 readers understand — straight lines and arcs,
  * lanes of constant width, road and junction links; left-hand traffic ({@code rule="LHT"}), so a
  * road's lane 1 carries traffic along its reference line. Each T-junction is a junction with a

@@ -13,8 +13,9 @@ import sitcov.world.Target;
 import sitcov.world.WorldMap;
 
 /**
- * What stands and moves on an exported map, as an ASAM OpenSCENARIO XML document (README,
- * "Export to OpenDRIVE and OpenSCENARIO"). A situation puts the car under test at its start with
+ * What stands and moves on an exported map, as an ASAM OpenSCENARIO XML document
+ * (src/main/java/sitcov/export/README.md, "Export to OpenDRIVE and OpenSCENARIO"). A situation puts the car under
+ * test at its start with
  * the Target as its goal (the scenario stops when it is reached), the parked cars where they stand
  * and the moving cars at their starts, driving off at sitcov's speed. A recording replays a run:
  * every vehicle follows its timed trajectory, and the run's accidents are declared as parameters

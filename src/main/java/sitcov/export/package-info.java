@@ -1,6 +1,6 @@
 /**
- * Situations and recorded runs in the ASAM formats any simulator plays (README, "Export to
- * OpenDRIVE and OpenSCENARIO"): {@link sitcov.export.OpenDrive} writes a map's roads, lanes and
+ * Situations and recorded runs in the ASAM formats any simulator plays (src/main/java/sitcov/export/README.md,
+ * "Export to OpenDRIVE and OpenSCENARIO"): {@link sitcov.export.OpenDrive} writes a map's roads, lanes and
  * T-junctions; {@link sitcov.export.OpenScenario} writes what stands and moves on them, either the
  * situation at its start or a {@link sitcov.export.RunRecording} as timed trajectories with its
  * accidents declared; {@link sitcov.export.AsamFrame} holds the one mapping between sitcov's

@@ -14,7 +14,7 @@ import sitcov.render.MapRenderer;
 import sitcov.stats.KaplanMeier;
 
 /**
- * A campaign's figure (README, "Campaigns: falsifying one version"): per fault a small panel of the
+ * A campaign's figure (experiments/README.md, "Campaigns: falsifying one version"): per fault a small panel of the
  * Kaplan–Meier curves of the share of trials not yet falsified against ticks, one curve per driver, a
  * tick mark where a trial was censored (its budget spent, or it stopped, without a failure).
  */

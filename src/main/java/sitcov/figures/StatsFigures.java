@@ -127,7 +127,7 @@ public final class StatsFigures {
             g.setFont(new Font(Font.SANS_SERIF, differs ? Font.BOLD : Font.PLAIN, 12));
             g.drawString(String.format(Locale.ROOT, "fault %2d  %d/%d vs %d/%d", t.variant().id(), t.foundA(), t.mapsA(),
                     t.foundB(), t.mapsB()), 20, y + 4);
-            g.drawString(t.finding().tested() ? "Holm p " + VerdictText.p(t.paired().pAdjusted())
+            g.drawString(t.finding().tested() ? "BH q " + VerdictText.p(t.paired().pAdjusted())
                     : t.finding() == Finding.TOO_FEW ? "too few differ" : "not testable",
                     left + width + 20, y + 4);
             Optional<String> noRatio = noRatio(t);
@@ -144,7 +144,7 @@ public final class StatsFigures {
         }
         g.setColor(Color.BLACK);
         g.drawString("maps finding it / maps run over all replications; bold, blue: the replication-level test (each"
-                + " replication's share, paired, Holm) shows a difference", 20, image.getHeight() - 20);
+                + " replication's share, paired, screened by Benjamini-Hochberg) flags a difference", 20, image.getHeight() - 20);
         g.dispose();
         return image;
     }

@@ -7,6 +7,7 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.function.IntConsumer;
 import sitcov.control.ControllerFactory;
+import sitcov.control.ControllerSource;
 import sitcov.faults.Fault;
 import sitcov.world.MapGenerator;
 
@@ -28,6 +29,23 @@ public final class FaultCalibration {
             long seed = first + i;
             // every column of calibration is a verdict, which a faulty run has settled when it stops
             tasks.add(() -> MapRunner.judge(MapGenerator.generate(seed), seed, ordered, FaultyRuns.UNTIL_VERDICT, car));
+        }
+        return InOrder.run(tasks, threads, progress, "fault calibration");
+    }
+
+    /**
+     * Every variant of {@code variants} (seam faults of the reference, say) judged on the same maps,
+     * each against the reference runs of the controller {@code reference} makes for the worker thread.
+     */
+    public static List<JudgedMap> runVariants(long first, int maps, List<Variant> variants, int threads,
+                                              ControllerSource reference, IntConsumer progress) {
+        List<Callable<JudgedMap>> tasks = new ArrayList<>(maps);
+        for (int i = 0; i < maps; i++) {
+            long seed = first + i;
+            tasks.add(() -> MapRunner.judgeVariants(MapGenerator.generate(seed), seed, variants, FaultyRuns.UNTIL_VERDICT,
+                    reference.forThisThread(), c -> {
+                        throw new IllegalArgumentException("calibration judges versions of one controller, not " + c.spec());
+                    }));
         }
         return InOrder.run(tasks, threads, progress, "fault calibration");
     }

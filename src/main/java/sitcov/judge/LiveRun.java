@@ -149,9 +149,25 @@ public final class LiveRun {
         return fork;
     }
 
-    /** Runs one tick; false once the run has ended (Target reached, timeout, or stopped). */
-    public boolean step() {
+    /** How far {@link #advance} took the run. */
+    public enum Progress {
+        /** Its controller took the tick's observation and waits for its command: the tick is paused. */
+        AWAITING_COMMAND,
+        /** A tick ran to its end; more follow. */
+        TICK_DONE,
+        /** The run has ended (Target reached, timeout, or stopped). */
+        ENDED
+    }
+
+    /**
+     * Runs one tick, or up to where its controller waits for its command ({@link
+     * sitcov.control.DeferredController}); the next call then finishes the paused tick.
+     */
+    public Progress advance() {
         boolean goesOn = state.step();
+        if (goesOn && state.schedule().isPaused()) {
+            return Progress.AWAITING_COMMAND;
+        }
         if (goesOn) {
             // watched as a RunObserver watches, so the tick that ends the run is watched too
             nearMisses.afterTick(scene.telemetry());
@@ -163,7 +179,19 @@ public final class LiveRun {
             ended = true;
             scene.autonomousCar().end(detector.outcome() == null ? "STOPPED" : detector.outcome().name(), detector.ticks());
         }
-        return goesOn;
+        return goesOn ? Progress.TICK_DONE : Progress.ENDED;
+    }
+
+    /**
+     * Runs one tick whole; false once the run has ended (Target reached, timeout, or stopped). A
+     * controller that answers later is answered at once, alone.
+     */
+    public boolean step() {
+        Progress p = advance();
+        while (p == Progress.AWAITING_COMMAND) {
+            p = advance();
+        }
+        return p == Progress.TICK_DONE;
     }
 
     public long tick() {

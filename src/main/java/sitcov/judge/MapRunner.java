@@ -1,13 +1,16 @@
 package sitcov.judge;
 
 import java.util.ArrayList;
+import java.util.EnumMap;
 import java.util.EnumSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
+import sitcov.seam.SeamFault;
 import sitcov.vehicles.CommandLog;
 import sitcov.world.WorldMap;
 
@@ -48,7 +51,7 @@ public final class MapRunner {
      * Judges every variant of {@code variants}, in the list's order, against the reference runs of
      * {@code reference}: a seeded fault as above (forked where it departs when it can be), another
      * controller ({@code controllers} makes it for this thread) run whole, its effect the ticks its
-     * commands differ from the reference's.
+     * commands differ from the reference's, a seam fault as {@link SeamRuns} judges it.
      */
     public static JudgedMap judgeVariants(WorldMap map, long internalSeed, List<Variant> variants, FaultyRuns length,
                                           ControllerFactory reference,
@@ -58,8 +61,16 @@ public final class MapRunner {
             return judge(map, internalSeed, seeded, length, reference);
         }
         CommandTrace trace = new CommandTrace();
-        RunRecord baseRun = Simulator.run(map, internalSeed, Set.of(), trace, reference);
+        List<SeamFault> seams = Variant.seamsOf(variants);
+        SeamRuns seamRuns = new SeamRuns(map, internalSeed, seams, length, reference);
+        RunRecord baseRun = seamRuns.reference(trace);
         RunResult base = baseRun.result();
+        Map<SeamFault, Variant.Seam> seamVariants = new EnumMap<>(SeamFault.class);
+        variants.stream().filter(v -> v instanceof Variant.Seam).map(v -> (Variant.Seam) v)
+                .forEach(v -> seamVariants.put(v.fault(), v));
+        Map<SeamFault, RunRecord> seamRecords = new EnumMap<>(SeamFault.class);
+        Map<SeamFault, FaultVerdict> seamVerdicts = seams.isEmpty() ? Map.of()
+                : seamRuns.verdicts(seamVariants, seamRecords);
         List<FaultVerdict> verdicts = new ArrayList<>(variants.size());
         List<CommandLog> commands = new ArrayList<>(1 + variants.size());
         commands.add(baseRun.commands());
@@ -70,6 +81,9 @@ public final class MapRunner {
                         .judged(), RunObserver.NONE, watch);
                 verdicts.add(DifferentialOracle.judge(base, faulty, s.fault()));
                 commands.add(faulty.commands());
+            } else if (v instanceof Variant.Seam s) {
+                verdicts.add(seamVerdicts.get(s.fault()));
+                commands.add(seamRecords.get(s.fault()).commands());
             } else if (v instanceof Variant.Controller c) {
                 CommandTrace.Comparison differs = trace.comparison();
                 RunRecord run = Simulator.drive(new LiveRun(map, internalSeed, Set.of(), controllers.apply(c)).judged(),

@@ -1,8 +1,8 @@
 package sitcov.judge;
 
 /**
- * When a seeded fault counts as found on a map (README, "The car under test, the traffic and the
- * oracle"): by the differential oracle (the faulty run has an accident the fault-free run of the same
+ * When a seeded fault counts as found on a map (faults/README.md, "The car under test, the traffic and the oracle"):
+ * by the differential oracle (the faulty run has an accident the fault-free run of the same
  * seeds lacks) or by the paper's weaker notion (the fault was triggered and the faulty run had any
  * accident). Each carries its name in the tables ({@link #key()}) and in the figures ({@link #label()}).
  */

@@ -6,12 +6,15 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import sitcov.faults.Fault;
+import sitcov.seam.SeamFault;
 
 /**
  * A version of the reference controller that an experiment judges against it by the differential
- * oracle (README, "Variants"): one of the builtin car's seeded faults switched on in the reference,
- * or another controller altogether (a program, an in-process controller, the builtin car with
- * faults planted). Every result names it by its {@link #id()} and {@link #label()}; a seeded fault
+ * oracle (experiments/controllers/README.md, "Variants: versions of your controller, judged against
+ * it"): one of the builtin car's seeded faults switched on in the reference, a seam fault (a sensor
+ * or actuator fault between the reference and the world), or another controller altogether (a
+ * program, an in-process controller, the builtin car with faults planted). Every result names it
+ * by its {@link #id()} and {@link #label()}; a seeded fault
  * keeps its catalogue id and label, so folders of the builtin car read as they always did.
  */
 public sealed interface Variant {
@@ -45,6 +48,23 @@ public sealed interface Variant {
         }
     }
 
+    /**
+     * A seam fault of the reference: the reference's controller with the fault between it and the world.
+     * Its run is the reference's until the fault first changes a value, so it can be forked there when the
+     * reference's controller can be copied. Its label is its spec, {@code seam:NAME}.
+     */
+    record Seam(int id, SeamFault fault) implements Variant {
+        @Override
+        public String label() {
+            return fault.spec();
+        }
+
+        @Override
+        public String spec() {
+            return fault.spec();
+        }
+    }
+
     /** Another controller: its runs are its own from the first tick, run whole. */
     record Controller(int id, String label, String spec) implements Variant {
         public Controller {
@@ -65,9 +85,21 @@ public sealed interface Variant {
         return faults;
     }
 
+    /** The seam faults of {@code variants}, in their order. */
+    static List<SeamFault> seamsOf(List<? extends Variant> variants) {
+        List<SeamFault> seams = new ArrayList<>();
+        for (Variant v : variants) {
+            if (v instanceof Seam s) {
+                seams.add(s.fault());
+            }
+        }
+        return seams;
+    }
+
     /**
      * Numbers a list of variants given by their specs: a seeded fault ({@code builtin:F} with one fault)
-     * keeps its id, every other variant takes the smallest id from 1 up that nothing before it took.
+     * keeps its id, every other variant (a seam fault {@code seam:NAME} among them) takes the smallest id
+     * from 1 up that nothing before it took.
      * {@code seeded} tells which specs name one seeded fault of the reference (null for the others).
      */
     static List<Variant> number(List<String> specs, java.util.function.Function<String, Fault> seeded) {
@@ -92,9 +124,13 @@ public sealed interface Variant {
                     next++;
                 }
                 taken.add(next);
-                v = new Controller(next, labelOf(specs.get(i)), specs.get(i).strip());
+                v = SeamFault.names(specs.get(i)) ? new Seam(next, SeamFault.parse(specs.get(i)).get(0))
+                        : new Controller(next, labelOf(specs.get(i)), specs.get(i).strip());
             }
             if (!labels.add(v.label())) {
+                if (v instanceof Seam) {
+                    throw new IllegalArgumentException(v.spec() + " is listed twice among the variants");
+                }
                 v = v instanceof Controller c ? new Controller(c.id(), c.label() + "-" + c.id(), c.spec()) : v;
                 labels.add(v.label());
             }

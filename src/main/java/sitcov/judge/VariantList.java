@@ -5,12 +5,14 @@ import java.util.List;
 import java.util.Set;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
+import sitcov.seam.SeamFault;
 
 /**
  * Variants as a preset's {@code variants=} key writes them: specs separated by {@code ;} (outside
  * quotes), each {@code builtin:F} (one seeded fault of the builtin reference; with several faults, the
  * builtin car with all of them planted, as another controller), {@code builtin} (the builtin car, as
- * another controller), {@code exec:COMMAND ARGS…} or {@code java:NAME}; or the whole list {@code none}
+ * another controller), {@code seam:NAME} (a seam fault of the reference; {@code seam:ALL}, the whole
+ * catalogue), {@code exec:COMMAND ARGS…} or {@code java:NAME}; or the whole list {@code none}
  * (no variants: the experiment seeks the reference's own failures).
  */
 public final class VariantList {
@@ -42,14 +44,15 @@ public final class VariantList {
                 throw new IllegalArgumentException("variants=none stands alone: it means no variants");
             }
             if (!spec.equals("builtin") && SOURCES.stream().noneMatch(spec::startsWith)) {
-                throw new IllegalArgumentException("a variant is builtin:FAULTS, builtin, exec:COMMAND ARGS or java:NAME"
+                throw new IllegalArgumentException("a variant is builtin:FAULTS, builtin, seam:NAME, exec:COMMAND ARGS or java:NAME"
                         + " (or the whole list is none), not '" + spec + "'");
             }
-            if (spec.startsWith("seam:")) {
-                throw new IllegalArgumentException("seam:NAME names a sensor or actuator fault at the seam, which this"
-                        + " version of sitcov does not have; use builtin:, exec: or java: variants");
+            if (SeamFault.names(spec)) {
+                // seam:ALL is the catalogue, one variant a fault
+                SeamFault.parse(spec).forEach(f -> specs.add(f.spec()));
+            } else {
+                specs.add(spec);
             }
-            specs.add(spec);
         }
         return Variant.number(specs, VariantList::seeded);
     }

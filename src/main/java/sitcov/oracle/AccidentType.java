@@ -3,7 +3,7 @@ package sitcov.oracle;
 import java.util.Locale;
 
 /**
- * The kinds of accident the oracle detects (README, "The car under test, the traffic and the oracle").
+ * The kinds of accident the oracle detects (faults/README.md, "The car under test, the traffic and the oracle").
  * Each carries its names: {@link #column()} in runs.csv, {@link #word()} in the calibration table
  * (one word, as that table's cells are separated by spaces) and {@link #label()} in the pictures' captions.
  */

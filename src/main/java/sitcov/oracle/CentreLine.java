@@ -12,8 +12,8 @@ import sitcov.world.RoadNetwork;
 
 /**
  * Where the other lane begins: whether a footprint reaches over a road's centre line, outside
- * junctions. The lane is judged from the footprint alone, never from what the car believes (README,
- * "The car under test, the traffic and the oracle"): on each road, the direction along it nearest the
+ * junctions. The lane is judged from the footprint alone, never from what the car believes (faults/README.md, "The
+ * car under test, the traffic and the oracle"): on each road, the direction along it nearest the
  * car's heading — so a car turned sharply across its road is still judged against that road.
  */
 final class CentreLine {

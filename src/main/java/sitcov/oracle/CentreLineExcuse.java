@@ -15,7 +15,7 @@ import sitcov.world.RoadNetwork;
 /**
  * When being over the centre line is justified, judged from what anyone sees of the car — its
  * footprint (and so its heading), the roads, the junctions and the parked cars — never from what
- * the car says it is doing (README, "The car under test, the traffic and the oracle"):
+ * the car says it is doing (faults/README.md, "The car under test, the traffic and the oracle"):
  *
  * <ul>
  *   <li><b>at a junction</b>: any part of the footprint is in a junction's square or within

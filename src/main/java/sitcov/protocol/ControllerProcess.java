@@ -28,7 +28,7 @@ final class ControllerProcess {
     static final long DRAIN_MILLIS = 5000;
     /** How long the end of a program's stdout is given to be followed by its exit, for the exit code. */
     static final long EXIT_STATUS_MILLIS = 1000;
-    /** A log file keeps this much of its controllers' stderr; the rest is cut (README, "Timeouts, failures and processes"). */
+    /** A log file keeps this much of its controllers' stderr; the rest is cut (experiments/controllers/README.md, "Timeouts, failures and processes"). */
     static final long LOG_CAP_BYTES = 1 << 20;
     /** Where a log is cut. */
     static final String LOG_CUT = "\n[sitcov: stderr cut at 1 MB; the rest of this log's controller stderr is not kept]\n";

@@ -7,7 +7,8 @@ import sitcov.control.Command;
 import sitcov.control.SelfReport;
 
 /**
- * The controller's side of the protocol (README, "The protocol"): the hello and the commands a
+ * The controller's side of the protocol (experiments/controllers/README.md, "The protocol"): the hello and the
+ * commands a
  * controller writes, as the builtin car served over the protocol writes them. sitcov's side, and the
  * reading of both, is {@link Wire}.
  */

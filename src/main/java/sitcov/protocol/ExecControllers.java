@@ -8,7 +8,7 @@ import java.util.List;
  * Controller programs started from one command line, one process per worker thread: each
  * {@link #worker} factory starts its process at its first run, reuses it run after run, and starts
  * a fresh one after a failure. {@link #check} starts one eagerly so that a command that cannot
- * handshake stops sitcov before anything runs (README, "Test your own controller").
+ * handshake stops sitcov before anything runs (experiments/controllers/README.md, "Testing your own controller").
  */
 public final class ExecControllers implements AutoCloseable {
     /** The per-tick timeout unless configured: generous for a slow controller on a loaded machine. */

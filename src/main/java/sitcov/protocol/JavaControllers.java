@@ -8,7 +8,8 @@ import sitcov.control.ControllerFactory;
 
 /**
  * The controllers written in Java that run in sitcov's process, by the name {@code java:NAME} gives
- * them wherever a controller is named (README, "A controller in Java"). A controller is a class
+ * them wherever a controller is named (experiments/controllers/README.md, "A controller in Java"). A controller is a
+ * class
  * implementing {@link sitcov.control.Controller} and a factory that makes one per run; adding one takes
  * that class and one line, a {@link #register} call made before the command runs (by a test, or by the
  * program that embeds sitcov and calls {@code sitcov.cli.Main.run}).

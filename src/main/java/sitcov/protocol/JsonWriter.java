@@ -144,6 +144,11 @@ final class JsonWriter {
 
     private void string(String s) {
         out.append('"');
+        if (isPlain(s)) {
+            // names and most values need no escape: one copy instead of a char at a time
+            out.append(s).append('"');
+            return;
+        }
         for (int i = 0, n = s.length(); i < n; i++) {
             char c = s.charAt(i);
             switch (c) {
@@ -162,5 +167,16 @@ final class JsonWriter {
             }
         }
         out.append('"');
+    }
+
+    /** Whether {@code s} is written as it stands between quotes: printable ASCII, no quote or backslash. */
+    private static boolean isPlain(String s) {
+        for (int i = 0, n = s.length(); i < n; i++) {
+            char c = s.charAt(i);
+            if (c < 0x20 || c >= 0x7f || c == '"' || c == '\\') {
+                return false;
+            }
+        }
+        return true;
     }
 }

@@ -30,6 +30,10 @@ final class Session implements AutoCloseable {
     private final JsonWriter writer = new JsonWriter();
     private final AtomicInteger state = new AtomicInteger(IDLE);
     private volatile long deadline;
+    /** When each message still waiting for its answer was sent, oldest first (a ring). */
+    private final long[] sentAt = new long[2];
+    private int oldest;
+    private int unanswered;
     private Wire.Hello hello;
     private boolean dead;
     private boolean inRun;
@@ -129,11 +133,80 @@ final class Session implements AutoCloseable {
      * {@code now.get(i)}) and returns the line of their commands; failures as {@link #step}.
      */
     String stepBatch(java.util.List<Observation> now, int[] slots, long timeoutMillis) {
+        sendBatch(now, slots, timeoutMillis);
+        return receiveBatch(now.get(0).tick(), timeoutMillis);
+    }
+
+    /**
+     * Sends the observations of several runs in one message without waiting for the answer, so
+     * that sitcov steps other runs while the controller works; {@link #receiveBatch} reads the
+     * answers in the order the messages went. The deadline of the oldest message not yet answered
+     * is the one armed.
+     */
+    void sendBatch(java.util.List<Observation> now, int[] slots, long timeoutMillis) {
+        checkAlive();
+        Wire.observations(writer, now, slots, hello);
+        send(now.get(0).tick(), timeoutMillis);
+    }
+
+    /** As {@link #sendBatch}, one run's observation in today's message of one run at a time. */
+    void sendOne(Observation now, long timeoutMillis) {
+        checkAlive();
+        Wire.observation(writer, now, hello);
+        send(now.tick(), timeoutMillis);
+    }
+
+    private void checkAlive() {
         if (dead) {
             throw new ControllerFailure(ControllerFailure.Kind.ERROR, "controller " + shown + " failed earlier in this run");
         }
-        Wire.observations(writer, now, slots, hello);
-        return answer(now.get(0).tick(), timeoutMillis);
+    }
+
+    /** Writes the message in the writer, arming its deadline if no earlier message waits for its answer. */
+    private void send(long tick, long timeoutMillis) {
+        long sent = System.nanoTime();
+        if (unanswered == sentAt.length) {
+            throw new IllegalStateException("at most " + sentAt.length + " messages may wait for their answers");
+        }
+        sentAt[(oldest + unanswered) % sentAt.length] = sent;
+        if (unanswered++ == 0) {
+            deadline = sent + timeoutMillis * 1_000_000;
+            state.set(WAITING);
+        }
+        try {
+            lines.write(writer);
+        } catch (IOException e) {
+            if (state.get() == TIMED_OUT) {
+                throw timeout(tick, timeoutMillis);
+            }
+            throw error("it exited" + exitStatus.get() + " or closed its input before the observation of tick "
+                    + tick + " (" + e.getMessage() + ")");
+        }
+    }
+
+    /** Reads the line answering the oldest message {@link #sendBatch} sent (its first observation of {@code tick}). */
+    String receiveBatch(long tick, long timeoutMillis) {
+        String line;
+        try {
+            line = lines.read();
+        } catch (IOException e) {
+            line = null;
+        }
+        oldest = (oldest + 1) % sentAt.length;
+        unanswered--;
+        if (unanswered > 0) {
+            // the next message's own deadline, unless the controller ran out of time meanwhile
+            deadline = sentAt[oldest] + timeoutMillis * 1_000_000;
+        } else if (!state.compareAndSet(WAITING, IDLE)) {
+            line = null;
+        }
+        if (state.get() == TIMED_OUT) {
+            throw timeout(tick, timeoutMillis);
+        }
+        if (line == null) {
+            throw error("it exited" + exitStatus.get() + " at tick " + tick + " instead of answering the observations");
+        }
+        return line;
     }
 
     /** Writes the message in the writer and reads the answer to the observation(s) of {@code tick}. */

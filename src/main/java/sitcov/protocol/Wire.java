@@ -19,7 +19,8 @@ import sitcov.geom.Compass;
 import sitcov.vehicles.Dynamics;
 
 /**
- * The messages of the protocol (README, "Test your own controller", "The protocol"), both ways:
+ * The messages of the protocol (experiments/controllers/README.md, "Testing your own controller", "The protocol"),
+ * both ways:
  * what sitcov writes and reads, and what a controller writes and reads. One JSON object a line;
  * every message has a "type". Protocol 2 is protocol 1 with the tick echoed: each command names
  * the tick of the observation it answers, so that a command that answers another observation (a

@@ -1,6 +1,6 @@
 /**
- * Controllers as programs speaking JSON Lines over stdin and stdout, in lockstep (README, "Test your
- * own controller", "The protocol"). sitcov's side: {@link sitcov.protocol.ExecControllers} starts a
+ * Controllers as programs speaking JSON Lines over stdin and stdout, in lockstep (experiments/controllers/README.md,
+ * "Testing your own controller", "The protocol"). sitcov's side: {@link sitcov.protocol.ExecControllers} starts a
  * program per worker thread, under a watchdog shell, and its {@link sitcov.protocol.ProxyFactory}
  * hands the world a controller that sends observations and reads commands within the per-tick
  * timeout. The controller's side: {@link sitcov.protocol.ControllerServer} serves any

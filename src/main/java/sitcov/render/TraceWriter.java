@@ -135,7 +135,7 @@ public final class TraceWriter implements RunObserver, AutoCloseable {
         return s.toString();
     }
 
-    /** A margin as runs.csv writes it (see README, "The results folder"): kept decimals, "inf", empty unknown. */
+    /** A margin as runs.csv writes it (see experiments/README.md, "The results folder"): kept decimals, "inf", empty unknown. */
     private static String margin(double v) {
         double kept = Margins.kept(v);
         if (Double.isNaN(kept)) {

@@ -27,7 +27,7 @@ import sitcov.verdict.CampaignVerdict;
 import sitcov.verdict.VerdictText;
 
 /**
- * Completes a campaign's results folder from its faults' sub-folders (README, "Campaigns: falsifying
+ * Completes a campaign's results folder from its faults' sub-folders (experiments/README.md, "Campaigns: falsifying
  * one version"): campaign.csv and its other tables, the verdict, the figure and campaign.html. Only the
  * sub-folders' journals are read, so a run, a resumed run and a report write the same bytes.
  */

@@ -21,12 +21,12 @@ final class ReportStats {
     private static List<Column> measureColumns(String a, String b) {
         return List.of(Column.text("measure"), Column.text("finding"), Column.number(a), Column.number(b),
                 Column.number("difference (95 % CI)"), Column.number("p (Holm)"), Column.number("equivalence p (margin)"),
-                Column.number("could detect"), Column.number("Â12"));
+                Column.number("could detect"), Column.text("higher in (paired)"));
     }
 
     private static List<Column> faultColumns(String a, String b) {
         return List.of(Column.text("fault"), Column.text("finding"), Column.number(a), Column.number(b),
-                Column.number("difference, points (95 % CI)"), Column.number("p (Holm)"),
+                Column.number("difference, points (95 % CI)"), Column.number("q (BH)"),
                 Column.text("pooled: found / maps of each"), Column.number("odds ratio (95 % CI)"));
     }
 
@@ -36,10 +36,11 @@ final class ReportStats {
     static void append(StringBuilder h, CsvTable stats) {
         h.append("<h2>Statistics of every pair of drivers</h2><p class=\"muted\">from <a href=\"").append(ResultsFolder.STATS)
                 .append("\">").append(ResultsFolder.STATS).append("</a> (all its columns there). The difference is the"
-                + " mean over paired replications of the first driver's value minus the second's; p is Holm-adjusted over the exploratory family (the primary"
-                + " test's own p for the primary); \"could detect\" is the difference the test would have found with 80 %"
-                + " probability; Â12 compares the replications unpaired. For a fault, each replication's share of its maps"
-                + " finding it is compared; the pooled counts and odds ratio only describe.</p>");
+                + " mean over paired replications of the first driver's value minus the second's; p is adjusted over the"
+                + " measures' family by closed testing (the primary test's own p for the primary); \"could detect\" is the"
+                + " difference the test would have found with 80 % probability; \"higher in\" counts the paired replications"
+                + " in which each driver was ahead. For a fault, a screening, each replication's share of its maps finding it"
+                + " is compared and q is Benjamini-Hochberg's; the pooled counts and odds ratio only describe.</p>");
         Map<String, List<List<String>>> pairs = new LinkedHashMap<>();
         for (List<String> r : stats.rows()) {
             pairs.computeIfAbsent(stats.get(r, "driver_a") + " against " + stats.get(r, "driver_b"), k -> new ArrayList<>())
@@ -68,7 +69,8 @@ final class ReportStats {
     private static List<String> measureRow(CsvTable s, List<String> r, String a, String b) {
         String margin = s.get(r, "margin");
         String tost = s.get(r, "p_tost_adjusted").isEmpty() ? s.get(r, "p_tost") : s.get(r, "p_tost_adjusted");
-        String a12 = s.get(r, "a12_unpaired");
+        String ahead = s.get(r, "higher_a").isEmpty() ? HtmlNumbers.NONE : s.get(r, "higher_a") + " : "
+                + s.get(r, "higher_b") + " of " + s.get(r, "replications");
         String detectable = s.get(r, "detectable_80");
         return List.of(Measure.ofKey(s.get(r, "name")).words(), finding(s, r, a, b), HtmlNumbers.mean(s.get(r, "mean_a")),
                 HtmlNumbers.mean(s.get(r, "mean_b")), difference(s, r, false),
@@ -76,8 +78,7 @@ final class ReportStats {
                 tost.isEmpty() ? HtmlNumbers.NONE : HtmlNumbers.p(tost) + " (±" + VerdictText.plain(Double.parseDouble(margin))
                         + ")",
                 detectable.equals("Infinity") ? "none at this n" : HtmlNumbers.mean(detectable),
-                a12.isEmpty() ? HtmlNumbers.NONE : String.format(java.util.Locale.ROOT, "%.2f %s", Double.parseDouble(a12),
-                        s.get(r, "effect_unpaired")));
+                ahead);
     }
 
     private static List<String> faultRow(CsvTable s, List<String> r, String a, String b) {

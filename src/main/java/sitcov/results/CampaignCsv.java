@@ -7,7 +7,7 @@ import sitcov.analysis.CampaignAnalysis;
 import sitcov.analysis.CampaignTrial;
 
 /**
- * A campaign's own tables (README, "Campaigns: falsifying one version"): {@code campaign.csv}, one row
+ * A campaign's own tables (experiments/README.md, "Campaigns: falsifying one version"): {@code campaign.csv}, one row
  * per fault, driver and trial; {@code campaign-drivers.csv}, one per fault and driver;
  * {@code campaign-stats.csv}, the tests per fault and pair and, as fault {@code ALL}, stratified by fault.
  * Numbers in full (the page rounds them); an empty cell is a value that does not exist.

@@ -22,7 +22,7 @@ import sitcov.judge.Variant;
 import sitcov.judge.VariantList;
 
 /**
- * {@code campaign.properties}: what fixes a campaign's results folder (README, "Campaigns: falsifying
+ * {@code campaign.properties}: what fixes a campaign's results folder (experiments/README.md, "Campaigns: falsifying
  * one version") and whether it is complete. Each fault's sub-folder has its own manifest, checked
  * against the one this one implies, so a campaign folder is resumed or reported from it alone.
  */

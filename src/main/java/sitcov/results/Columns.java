@@ -9,7 +9,7 @@ import java.util.Set;
 
 /**
  * The schema of one CSV table: its column list, the single place that both writes the table and
- * reads it back (README, "The results folder"). Rows are written by column name and read by the
+ * reads it back (experiments/README.md, "The results folder"). Rows are written by column name and read by the
  * names of the file's own header, so a folder written by another version of sitcov is either read
  * correctly or refused with a message naming the column it lacks or does not know; it is never
  * misread by position.

@@ -7,7 +7,7 @@ import java.util.List;
 import java.util.zip.CRC32;
 
 /**
- * The checks that make a results folder refuse hand edits (README, "The results folder"): every
+ * The checks that make a results folder refuse hand edits (experiments/README.md, "The results folder"): every
  * row of the journal files ends in a {@code check} column, a CRC-32 of the row keyed by the
  * experiment's identity, so a row is valid only as written and only under the manifest it was
  * written for; runs.csv rows also carry {@code situation_check}, the CRC-32 of the kept situation

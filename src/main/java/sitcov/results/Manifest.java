@@ -33,7 +33,7 @@ import sitcov.judge.FaultyRuns;
  *
  * <p>{@code checks} holds a CRC-32 of every other line but {@code complete} (the one line the tool
  * itself flips, and whose edits the journal exposes), so a hand edit is refused naming its key
- * (README, "The results folder"). {@code checked} is false for a folder written before checks:
+ * (experiments/README.md, "The results folder"). {@code checked} is false for a folder written before checks:
  * it is read, and written again, without them.
  */
 public record Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed,

@@ -62,7 +62,7 @@ public final class ResultsFolder {
     /** Held by the run writing the folder; gone when it ends (a killed run leaves it, unlocked). */
     public static final String LOCK = ".sitcov.lock";
 
-    /** A campaign's own files, at the top of its folder (README, "Campaigns: falsifying one version"). */
+    /** A campaign's own files, at the top of its folder (experiments/README.md, "Campaigns: falsifying one version"). */
     public static final String CAMPAIGN_MANIFEST = "campaign.properties";
     public static final String CAMPAIGN_TRIALS = "campaign.csv";
     public static final String CAMPAIGN_DRIVERS = "campaign-drivers.csv";

@@ -1,7 +1,7 @@
 package sitcov.sensors;
 
 /**
- * What the road-marking camera can see (README, "The car under test, the traffic and the oracle"):
+ * What the road-marking camera can see (faults/README.md, "The car under test, the traffic and the oracle"):
  * the arc to the left and right of the
  * lane direction (the kerb-side edge line is looked for on the left, the centre line on the
  * right), its range, and how finely it samples angle and distance. These are what faults 8–13 degrade.

@@ -10,7 +10,7 @@ import sitcov.world.Dimensions;
 import sitcov.world.RoadNetwork;
 
 /**
- * The obstacle LIDAR (README, "The car under test, the traffic and the oracle"): 360 rays over
+ * The obstacle LIDAR (faults/README.md, "The car under test, the traffic and the oracle"): 360 rays over
  * 180° at 0.5°, sampled every 0.5 m up to
  * 25 m. A ray stops at the first thing it hits — a parked car or a vehicle — so a car hidden
  * behind another is not seen, and at the first sample off the road. Hits are reported in the

@@ -6,7 +6,7 @@ import sitcov.geom.Bearing;
 import sitcov.geom.Compass;
 
 /**
- * The moving-vehicle sensor (a radar; README, "The car under test, the traffic and the oracle"):
+ * The moving-vehicle sensor (a radar; faults/README.md, "The car under test, the traffic and the oracle"):
  * it sees vehicles up to 100 m away within
  * a forward field (45°, or 180° within 25 m), measures where they are and how fast they move, and
  * sorts them into those in the car's own path and those in the oncoming lane. Results are kept

@@ -4,8 +4,8 @@
  * <p>Besides {@link sitcov.stats.Richness}, the package holds what comparing configurations over
  * replicated runs needs: the rank tests {@link sitcov.stats.MannWhitney} and
  * {@link sitcov.stats.WilcoxonSignedRank} with the effect size {@link sitcov.stats.VarghaDelaney},
- * {@link sitcov.stats.FisherExact} for proportions of runs with an odds ratio, {@link sitcov.stats.Holm}
- * for families of tests, {@link sitcov.stats.Tost} for equivalence within a margin (on
+ * {@link sitcov.stats.FisherExact} for proportions of runs with an odds ratio, {@link sitcov.stats.Holm},
+ * {@link sitcov.stats.ClosedTesting} and {@link sitcov.stats.BenjaminiHochberg} for families of tests, {@link sitcov.stats.Tost} for equivalence within a margin (on
  * {@link sitcov.stats.StudentT}), {@link sitcov.stats.DetectableDifference} for what a test could have
  * found, {@link sitcov.stats.Dispersion} for how clustered binomial counts are, {@link sitcov.stats.Wilson} intervals for a proportion and
  * {@link sitcov.stats.Bootstrap} intervals for a difference of means, on top of

@@ -3,6 +3,7 @@ package sitcov.vehicles;
 import sitcov.control.Command;
 import sitcov.control.Controller;
 import sitcov.control.ControllerFailure;
+import sitcov.control.DeferredController;
 import sitcov.control.Observation;
 import sitcov.control.SelfReport;
 import sitcov.control.Vehicle;
@@ -14,8 +15,9 @@ import sitcov.world.Dimensions;
 import sitcov.world.StartPose;
 
 /**
- * The car under test as the world has it: a body that only the world moves. Each tick, before any
- * other vehicle, it hands its controller an observation, takes back a command, carries out the
+ * The car under test as the world has it: a body that only the world moves. Each tick, at its turn
+ * among the vehicles (shuffled every tick, as every agent of one ordering is), it hands its
+ * controller an observation, takes back a command, carries out the
  * command's right-of-way requests, clamps its speed change and steering to the car's limits
  * (recording that it had to), turns, moves, and judges from the geometry whether the car now
  * stands on the Target. The controller's self-report is kept for people, never judged by.
@@ -41,6 +43,8 @@ public final class AutonomousCar implements Bodied, Steppable {
     private double askedSpeed;
     private double askedSteering;
     private boolean reachedTarget;
+    /** Its deferred controller has the tick's observation; the tick is paused until its command is in. */
+    private boolean awaitingCommand;
     private ControllerFailure failure;
     private Box keptClear;
     private Box keptClearOf;
@@ -59,7 +63,20 @@ public final class AutonomousCar implements Bodied, Steppable {
         if (reachedTarget || failure != null) {
             return;
         }
-        observation.refresh(state.tick());
+        if (awaitingCommand) {
+            awaitingCommand = false;
+        } else {
+            observation.refresh(state.tick());
+            if (controller instanceof DeferredController deferred && observed(deferred)) {
+                // the tick resumes, and this step comes again, once the command is in
+                awaitingCommand = true;
+                state.schedule().pause();
+                return;
+            }
+        }
+        if (failure != null) {
+            return;
+        }
         command.clear();
         try {
             controller.step(observation, command);
@@ -106,8 +123,23 @@ public final class AutonomousCar implements Bodied, Steppable {
         return log;
     }
 
+    /** Hands the observation to a controller that answers later; false when it failed at once (the run then ends). */
+    private boolean observed(DeferredController deferred) {
+        try {
+            deferred.observe(observation);
+            return true;
+        } catch (ControllerFailure failed) {
+            failure = failed;
+        } catch (RuntimeException bug) {
+            failure = new ControllerFailure(ControllerFailure.Kind.ERROR, "the controller threw " + bug);
+        }
+        log.failed(failure.kind(), failure.getMessage());
+        return false;
+    }
+
     /**
-     * The junction rule the command breaks, or null (README, "How the car moves"): it names only
+     * The junction rule the command breaks, or null (experiments/controllers/README.md, "How the car moves"): it
+     * names only
      * junctions of the map; it claims a junction only within {@link JunctionRules#CLAIM_WITHIN} of
      * its square; after its releases it holds and asks for at most {@link JunctionRules#MAX_HELD}.
      */

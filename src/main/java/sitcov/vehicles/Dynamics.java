@@ -1,6 +1,6 @@
 package sitcov.vehicles;
 
-/** Speeds and turns every car shares (README, "The car under test, the traffic and the oracle"), per tick of 0.2 s. */
+/** Speeds and turns every car shares (faults/README.md, "The car under test, the traffic and the oracle"), per tick of 0.2 s. */
 public final class Dynamics {
     /** 2.5 m per tick: 12.5 m/s, 45 km/h. */
     public static final double MAX_SPEED = 2.5;

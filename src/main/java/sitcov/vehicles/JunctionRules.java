@@ -17,7 +17,8 @@ public final class JunctionRules {
     /**
      * The car under test may claim a junction only while its front centre is this near the
      * junction's square (0 inside it): more than the 23.75 m a car needs to stop from full speed, so
-     * a car that slows for a junction can always have asked in time (README, "How the car moves").
+     * a car that slows for a junction can always have asked in time (experiments/controllers/README.md, "How the car
+     * moves").
      */
     public static final double CLAIM_WITHIN = 30;
     /**

@@ -52,7 +52,7 @@ public final class Scene {
     /**
      * Builds the scene of {@code map} for one run: the car under test at its start, driven by the
      * controller {@code controllers} makes for this run, and a moving car at each moving-car start,
-     * all scheduled every tick from tick 0 (the car under test first).
+     * all scheduled every tick from tick 0, in an order shuffled every tick.
      */
     public static Scene start(WorldMap map, SimState state, ControllerFactory controllers) {
         Scene scene = new Scene(map, state);

@@ -6,6 +6,7 @@ import sitcov.control.Channel;
 import sitcov.control.Observation;
 import sitcov.control.RightOfWay;
 import sitcov.control.Vehicle;
+import sitcov.engine.ReadOnlyView;
 import sitcov.geom.Bearing;
 import sitcov.geom.Box;
 import sitcov.geom.Compass;

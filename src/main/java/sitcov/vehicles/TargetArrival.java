@@ -4,8 +4,9 @@ import sitcov.world.Target;
 
 /**
  * Whether the car stands on the Target, judged by the world from geometry: its front centre within
- * {@value #CAPTURE_DISTANCE} m of the Target, which may lie anywhere across its road (README, "What
- * the oracle judges"). The builtin car used to end the run itself, once it also believed the Target
+ * {@value #CAPTURE_DISTANCE} m of the Target, which may lie anywhere across its road
+ * (experiments/controllers/README.md, "What the oracle judges"). The builtin car used to end the run itself, once it
+ * also believed the Target
  * to be in its lane; the world cannot take a controller's word for that.
  */
 public final class TargetArrival {

@@ -9,7 +9,7 @@ import sitcov.experiment.CampaignConfig;
 import sitcov.stats.FisherExact;
 
 /**
- * A campaign's verdict in plain sentences (README, "Campaigns: falsifying one version"): what each
+ * A campaign's verdict in plain sentences (experiments/README.md, "Campaigns: falsifying one version"): what each
  * driver falsified, then per pair the stratified log-rank test over all faults, then the per-fault tests
  * that show a difference after Holm's adjustment. Like the suites' verdict it claims no more than the
  * tests show: a test that shows nothing is "no difference shown", never "equal".

@@ -14,7 +14,11 @@ import sitcov.analysis.Finding;
 import sitcov.analysis.PairedDifference;
 import sitcov.judge.Variant;
 
-/** The per-fault sentence of one pair: which faults each driver's maps find more often, and which could not be tested. */
+/**
+ * The per-fault sentence of one pair, a screening: which faults each driver's maps find more often (flagged
+ * under Benjamini–Hochberg), where no difference was shown and what the test could have detected, and which
+ * faults no difference could have flagged or were not tested.
+ */
 public final class FaultFindings {
     private FaultFindings() {
     }
@@ -23,6 +27,7 @@ public final class FaultFindings {
         List<String> moreA = new ArrayList<>();
         List<String> moreB = new ArrayList<>();
         List<Variant> none = new ArrayList<>();
+        List<Variant> unreachable = new ArrayList<>();
         double lowest = Double.POSITIVE_INFINITY;
         double highest = 0;
         Map<String, List<Variant>> untested = new TreeMap<>();
@@ -35,7 +40,7 @@ public final class FaultFindings {
                 case HIGHER_A -> moreA.add(found(f));
                 case HIGHER_B -> moreB.add(found(f));
                 case INCONCLUSIVE -> {
-                    none.add(id);
+                    (Double.isFinite(f.paired().detectable()) ? none : unreachable).add(id);
                     if (Double.isFinite(f.paired().detectable())) {
                         lowest = Math.min(lowest, f.paired().detectable());
                         highest = Math.max(highest, f.paired().detectable());
@@ -48,8 +53,8 @@ public final class FaultFindings {
             }
         }
         String word = VerdictText.noun(comparison.faults().stream().map(FaultComparison::variant).toList(), 1);
-        StringBuilder s = new StringBuilder("- per " + word + " (each replication's share of its maps finding the " + word
-                + ", paired signed-rank test, Holm-adjusted): ");
+        StringBuilder s = new StringBuilder("- per " + word + ", a screening (each replication's share of its maps finding"
+                + " the " + word + ", paired signed-rank test; Benjamini-Hochberg over every pair's " + word + "s): ");
         List<String> parts = new ArrayList<>();
         if (!moreA.isEmpty()) {
             parts.add("found on a larger share of " + a + "'s maps: " + String.join("; ", moreA));
@@ -58,8 +63,13 @@ public final class FaultFindings {
             parts.add("found on a larger share of " + b + "'s maps: " + String.join("; ", moreB));
         }
         if (!none.isEmpty()) {
-            parts.add("no difference shown for " + ids(none) + (lowest <= highest ? String.format(Locale.ROOT,
-                    " (the test could have detected %s to %s points or more)", points(lowest), points(highest)) : ""));
+            String range = points(lowest).equals(points(highest)) ? points(lowest) : points(lowest) + " to " + points(highest);
+            parts.add("no difference shown for " + ids(none) + (lowest <= highest ? " (the test could have detected " + range
+                    + " points or more)" : ""));
+        }
+        if (!unreachable.isEmpty()) {
+            parts.add(ids(unreachable) + " could not have been flagged, however large the difference (too few of the"
+                    + " replications differ for the level the screening needed)");
         }
         List<String> why = new ArrayList<>();
         untested.forEach((reason, ids) -> why.add(ids(ids) + " (" + reason + ")"));
@@ -77,7 +87,7 @@ public final class FaultFindings {
         double low = a ? d.difference().low() : -d.difference().high();
         double high = a ? d.difference().high() : -d.difference().low();
         return String.format(Locale.ROOT, "%s %d (%s %% of %s's maps against %s %% of %s's, +%s points, CI %s to %s;"
-                + " Holm p = %s)", VerdictText.noun(List.of(f.variant()), 1), f.variant().id(), percent(a ? d.meanA() : d.meanB()), a ? f.driverA() : f.driverB(),
+                + " BH q = %s)", VerdictText.noun(List.of(f.variant()), 1), f.variant().id(), percent(a ? d.meanA() : d.meanB()), a ? f.driverA() : f.driverB(),
                 percent(a ? d.meanB() : d.meanA()), a ? f.driverB() : f.driverA(), points(sign * d.difference().estimate()),
                 points(low), points(high), p(d.pAdjusted()));
     }

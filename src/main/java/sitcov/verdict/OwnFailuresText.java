@@ -32,16 +32,33 @@ public final class OwnFailuresText {
                     + " distinct a replication on average, %d distinct over all %d replications", r.driver(), r.failures(),
                     r.ticks() / 1e6, r.perMillionTicks(), r.distinctMean(), r.distinctPooled(), replications);
             if (!r.driver().equals(reference)) {
-                line += String.format(Locale.ROOT, "; %s %s's rate (×%s%s); a higher rate than %s in %d replications, a"
-                        + " lower one in %d, sign test p = %s: %s", r.perMillionTicks() >= ref.perMillionTicks() ? "above"
-                        : "below", reference, ref.perMillionTicks() == 0 ? "n/a" : String.format(Locale.ROOT, "%.2f",
-                                r.perMillionTicks() / ref.perMillionTicks()), ratioInterval(r), reference, r.higher(), r.lower(),
-                        VerdictText.p(r.p()), r.p() < 0.05 ? (r.higher() > r.lower() ? "it finds them more often"
-                                : "it finds them less often") : "no difference in rate shown");
+                line += "; " + rate(r, ref) + String.format(Locale.ROOT, "; a higher rate than %s in %d replications, a"
+                        + " lower one in %d, sign test p = %s: %s", reference, r.higher(), r.lower(), VerdictText.p(r.p()),
+                        signTestCanReach(r) ? r.p() < 0.05 ? (r.higher() > r.lower() ? "it finds them more often"
+                        : "it finds them less often") : "no difference in rate shown" : "not tested, as so few replications"
+                        + " differ that the sign test cannot reach 0.05");
             }
             out.add(line + ".");
         }
         return out;
+    }
+
+    /** Whether a sign test over the replications that differ could reach 0.05: its smallest p is 2/2^n. */
+    static boolean signTestCanReach(OwnFailures.DriverRate r) {
+        return 2 / Math.pow(2, r.higher() + r.lower()) < 0.05;
+    }
+
+    /**
+     * "above random's rate (×1.24, 95 % CI …)"; where the reference found none there is no ratio, and
+     * where neither found any, nothing to compare.
+     */
+    private static String rate(OwnFailures.DriverRate r, OwnFailures.DriverRate ref) {
+        if (ref.perMillionTicks() == 0) {
+            return r.perMillionTicks() == 0 ? "none, as " + ref.driver() + " found none" : "above " + ref.driver()
+                    + "'s rate, which is 0 (no ratio)";
+        }
+        return String.format(Locale.ROOT, "%s %s's rate (×%.2f%s)", r.perMillionTicks() >= ref.perMillionTicks() ? "above"
+                : "below", ref.driver(), r.perMillionTicks() / ref.perMillionTicks(), ratioInterval(r));
     }
 
     /** ", 95 % CI 0.61 to 3.20 over replications", or nothing where the ratio has no interval. */

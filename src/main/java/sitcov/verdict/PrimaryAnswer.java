@@ -12,8 +12,8 @@ import sitcov.experiment.AnalysisPlan;
 /**
  * The one sentence that answers a preset's primary question, with the numbers in the order the
  * question names the drivers: yes or no where a difference or equivalence is shown, "inconclusive"
- * with what the data still allow and what could have been detected, "not decided" where too few
- * replications differ for the test to decide anything.
+ * with what the data still allow and what could have been detected, "no difference tested" where too
+ * few replications differ for the test to reach the level.
  */
 final class PrimaryAnswer {
     private PrimaryAnswer() {
@@ -41,18 +41,23 @@ final class PrimaryAnswer {
                         + (m.pTost() < AnalysisPlan.ALPHA ? ", yet inside the margin " + margin + " (" + tost + "): a"
                         + " difference too small to matter." : ".");
             }
-            case EQUIVALENT -> "equivalent within " + margin + ": " + numbers + "; " + tost + "; no difference shown, "
-                    + test + ").";
+            case EQUIVALENT -> "equivalent within " + margin + ": " + numbers + "; " + tost + (Double.isNaN(d.pAdjusted())
+                    ? "; a difference not tested: " + tooFew(d) + ")." : "; no difference shown, " + test + ").");
             case INCONCLUSIVE -> "inconclusive: " + numbers + "). Neither a difference (" + test + ") nor equivalence"
                     + " within " + margin + " (" + tost + ") is shown" + VerdictText.detectable(d).replace("; it", "; the"
                     + " test") + ".";
-            case TOO_FEW -> "not decided: " + m.note() + ", and equivalence within " + margin + " is not shown ("
-                    + tost + "). " + numbers + ") describes the difference; it does not test it. Run more replications"
-                    + " (--replications N).";
+            case TOO_FEW -> "no difference tested (" + m.note() + " for the signed-rank test to reach 5 %), and"
+                    + " equivalence within " + margin + " is not shown (" + tost + "). " + numbers + ") describes the"
+                    + " difference; it does not test it. Run more replications (--replications N).";
             case NOT_TESTABLE -> "not testable: " + m.note() + " (" + first + " " + number(asNamed ? d.meanA() : d.meanB())
                     + " against " + second + " " + number(asNamed ? d.meanB() : d.meanA()) + " on average), so this measure"
                     + " cannot tell the two drivers apart.";
         };
+    }
+
+    /** Why the difference was not tested: its smallest attainable p. */
+    private static String tooFew(PairedDifference d) {
+        return String.format(java.util.Locale.ROOT, "its smallest attainable p is %s", p(d.smallestP()));
     }
 
     /** "1 fault", "5 cells": the unit in the singular where the margin is one. */

@@ -36,7 +36,7 @@ public final class VariantsText {
         }
         List<String> keys = new ArrayList<>();
         for (Variant v : config.variants()) {
-            keys.add(v.id() + " = " + v.label() + " (" + v.spec() + ")");
+            keys.add(v.id() + " = " + v.label() + (v.label().equals(v.spec()) ? "" : " (" + v.spec() + ")"));
         }
         out.add("Reference " + config.controller() + "; its variants, named below by their ids (which the files' fault"
                 + " columns hold): " + String.join("; ", keys) + ".");

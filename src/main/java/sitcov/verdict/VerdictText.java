@@ -17,12 +17,12 @@ import sitcov.experiment.Measure;
 
 /**
  * The verdict of a comparison in plain sentences, claiming no more than the tests show: first the
- * answer to the preset's primary question, then once how to read the rest (the family, the words,
- * the caveat of few replications), then for each pair of drivers a one-line summary and each
+ * answer to the preset's primary question, then once how to read the rest (the families, the words,
+ * the caveats of few replications), then for each pair of drivers a one-line summary and each
  * measure's finding — higher, equivalent within the margin, inconclusive with what remains
  * possible, not tested or not testable — then the faults whose detection differs, then what the
  * cells say about faults (the paper's uniformity hypothesis). Lines starting "- " are items under
- * the line before them.
+ * the line before them. {@link Reading} holds how to read it.
  */
 public final class VerdictText {
     static final double ALPHA = AnalysisPlan.ALPHA;
@@ -45,9 +45,9 @@ public final class VerdictText {
         List<MeasureComparison> all = comparison.measures();
         if (!all.isEmpty()) {
             // with one driver there is no pair to compare, and nothing for these paragraphs to explain
-            fewReplications(comparison.replications()).ifPresent(out::add);
-            unreachable(comparison).ifPresent(out::add);
-            out.add(howToRead(comparison, budget));
+            Reading.fewReplications(comparison.replications()).ifPresent(out::add);
+            Reading.unreachable(comparison).ifPresent(out::add);
+            out.add(Reading.howToRead(comparison, budget));
         }
         int perPair = comparison.plan().measures().size();
         for (int i = 0; i < all.size(); i += perPair) {
@@ -56,7 +56,7 @@ public final class VerdictText {
             String b = pair.get(0).driverB();
             out.add(PairSummary.heading(a, b, comparison.replications()));
             out.add(PairSummary.inShort(pair, comparison.faults().stream()
-                    .filter(f -> f.driverA().equals(a) && f.driverB().equals(b)).toList()));
+                    .filter(f -> f.driverA().equals(a) && f.driverB().equals(b)).toList(), comparison.replications()));
             for (MeasureComparison m : pair) {
                 out.add(measure(m));
             }
@@ -67,25 +67,6 @@ public final class VerdictText {
             out.add(uniformity(uniformity));
         }
         return out;
-    }
-
-    /**
-     * The caveat of tests that no difference could have passed at this n (the smallest p of their
-     * signed-rank test is above the Holm level they were held to), said once for all of them.
-     */
-    static Optional<String> unreachable(Comparison c) {
-        long measures = c.measures().stream().filter(m -> !m.primary() && m.finding() == Finding.INCONCLUSIVE
-                && Double.isInfinite(m.paired().detectable())).count();
-        long faults = c.faults().stream().filter(f -> f.finding() == Finding.INCONCLUSIVE
-                && Double.isInfinite(f.paired().detectable())).count();
-        if (measures + faults == 0 || Comparison.tooFewReplications(c.replications())) {
-            return Optional.empty();
-        }
-        return Optional.of(String.format(Locale.ROOT, "%d of the exploratory tests below (%d of measures, %d per fault)"
-                + " could not have shown a difference, however large: so few of their replications differ that the"
-                + " smallest p their signed-rank test can give is above the Holm level they were held to, and their"
-                + " \"inconclusive\" says only that. More replications would tell more (--replications N).",
-                measures + faults, measures, faults));
     }
 
     private static String question(AnalysisPlan plan, BudgetKind budget) {
@@ -100,45 +81,6 @@ public final class VerdictText {
         };
     }
 
-    /** The caveat of too few replications for any signed-rank test, said once; empty when there is none. */
-    static Optional<String> fewReplications(int n) {
-        if (!Comparison.tooFewReplications(n)) {
-            return Optional.empty();
-        }
-        double smallest = Math.min(1, 2 / Math.pow(2, Math.max(0, n)));
-        return Optional.of(String.format(Locale.ROOT, "Too few replications to test: with %d paired replications no"
-                + " signed-rank test can reach p < %s (its smallest two-sided p is 2/2^%d = %s), so the CIs and Â12 below"
-                + " describe the differences, they do not test them. Run at least 6 with --replications N (30 is the"
-                + " usual minimum).", n, plain(ALPHA), n, plain(smallest)));
-    }
-
-    private static String howToRead(Comparison c, BudgetKind budget) {
-        StringBuilder s = new StringBuilder("How to read this verdict: ").append(c.replications()).append(" paired"
-                + " replications (the replication is the unit: the drivers of one read the same candidates)");
-        s.append(budget == BudgetKind.TICKS ? "; each pair is compared on the maps each driver had judged within the ticks"
-                + " both spent." : "; each driver's measures are over everything it ran in the same wall-clock time.");
-        List<String> kinds = new ArrayList<>();
-        kind(kinds, c.familyMeasureDifferences(), "difference", "of measures");
-        kind(kinds, c.familyEquivalences(), "equivalence", "of measures");
-        kind(kinds, c.familyFaults(), "per-fault difference", "");
-        s.append(c.primary().isPresent() ? " The primary question is tested at 5 % on its own; the other " : " The ")
-                .append(c.familySize()).append(" tests").append(kinds.isEmpty() ? "" : " (" + String.join(", ", kinds) + ")")
-                .append(" are exploratory, held together to a 5 % family-wise error by Holm's method: the p-values below"
-                        + " are Holm-adjusted.");
-        s.append(" \"Higher\": a difference shown by the paired signed-rank test. \"Equivalent within ±m\": two one-sided"
-                + " t-tests show the mean difference inside the preset's margin ±m. \"Inconclusive\": neither shown; the"
-                + " 95 % bootstrap CI says what is still possible, and \"could have detected d\" is the difference the test"
-                + " would have found with 80 % probability. \"Not tested\": too few replications differ for the test to"
-                + " reach 5 %. Â12 (Vargha-Delaney) compares the replications unpaired and only describes.");
-        return s.toString();
-    }
-
-    private static void kind(List<String> kinds, int count, String what, String of) {
-        if (count > 0) {
-            kinds.add(count + " " + what + (count == 1 ? "" : "s") + (of.isEmpty() ? "" : " " + of));
-        }
-    }
-
     static String measure(MeasureComparison m) {
         String words = m.measure().words();
         if (m.primary()) {
@@ -146,22 +88,34 @@ public final class VerdictText {
         }
         PairedDifference d = m.paired();
         String numbers = numbers(d);
-        String a12 = String.format(Locale.ROOT, "Â12 %.2f, %s", m.a12(), m.effect().label());
+        String a12 = ahead(m);
         return switch (m.finding()) {
             case HIGHER_A, HIGHER_B -> "- " + words + ": higher for " + (m.finding() == Finding.HIGHER_A ? m.driverA()
                     : m.driverB()) + ", " + numbers + "; Holm p = " + p(d.pAdjusted()) + "; " + a12 + ")"
                     + (m.pTostAdjusted() < ALPHA ? ", by less than the margin ±" + plain(m.margin()) + " (equivalent"
                     + " too, Holm p = " + p(m.pTostAdjusted()) + "): too small to matter." : ".");
             case EQUIVALENT -> "- " + words + ": equivalent within ±" + plain(m.margin()) + ", " + numbers
-                    + "; two one-sided tests Holm p = " + p(m.pTostAdjusted()) + ").";
+                    + "; two one-sided tests Holm p = " + p(m.pTostAdjusted()) + "; " + a12 + ").";
             case INCONCLUSIVE -> "- " + words + ": inconclusive, " + numbers + "; difference Holm p = " + p(d.pAdjusted())
                     + (Double.isNaN(m.pTostAdjusted()) ? "" : ", within ±" + plain(m.margin()) + " Holm p = "
-                    + p(m.pTostAdjusted())) + ")" + detectable(d) + ".";
+                    + p(m.pTostAdjusted())) + "; " + a12 + ")" + detectable(d) + ".";
             case TOO_FEW -> "- " + words + ": not tested (" + m.note() + "), " + numbers + "; " + a12 + ")"
                     + (Double.isNaN(m.pTostAdjusted()) ? "" : "; not shown equivalent within ±" + plain(m.margin())
                     + " (Holm p = " + p(m.pTostAdjusted()) + ")") + ".";
             case NOT_TESTABLE -> "- " + words + ": not testable: " + m.note() + ".";
         };
+    }
+
+    /**
+     * The paired effect size in words: "coverage-filter higher in 27 of 30 replications, random in 2" (ties
+     * are the rest), the replications compared each with its own pair.
+     */
+    static String ahead(MeasureComparison m) {
+        PairedDifference d = m.paired();
+        boolean a = d.higherA() >= d.higherB();
+        return (a ? m.driverA() : m.driverB()) + " higher in " + (a ? d.higherA() : d.higherB()) + " of "
+                + d.replications() + " replications, " + (a ? m.driverB() : m.driverA()) + " in "
+                + (a ? d.higherB() : d.higherA());
     }
 
     /** "13.60 against 13.67 (−0.067, CI −0.700 to 0.534", left open for the test that follows. */

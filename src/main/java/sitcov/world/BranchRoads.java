@@ -14,7 +14,7 @@ import sitcov.geom.Vec2;
 
 /**
  * Grows and prunes a map's road tree the way the generator grows it ({@link RoadTreeBuilder};
- * README, "Maps and situation files"): a branch
+ * src/main/java/sitcov/cli/README.md, "Maps and situation files"): a branch
  * leaves its parent road at a T-junction at least 9 m from the parent's ends, keeps 1 m from every
  * other road, and ends in a dead end. Only a leaf branch (no branch of its own) can be removed, so
  * the roads stay a tree. Road and junction ids stay their indices, as situation files require.

@@ -1,8 +1,8 @@
 package sitcov.world;
 
 /**
- * The world's fixed measures, in metres and seconds (README, "Maps and situation files", and "The car under test, the
- * traffic and the oracle").
+ * The world's fixed measures, in metres and seconds (src/main/java/sitcov/cli/README.md, "Maps and situation files",
+ * and faults/README.md, "The car under test, the traffic and the oracle").
  */
 public final class Dimensions {
     /** A tick's length: the car's top speed of 2.5 m a tick is 45 km/h. */

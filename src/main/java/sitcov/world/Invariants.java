@@ -20,7 +20,8 @@ import sitcov.geom.Rect;
 import sitcov.geom.Vec2;
 
 /**
- * The rules every generated map keeps (README, "Maps and situation files"). {@link #check} lists each broken rule with the
+ * The rules every generated map keeps (src/main/java/sitcov/cli/README.md, "Maps and situation files"). {@link
+ * #check} lists each broken rule with the
  * element that breaks it; an empty list means the map is well formed.
  */
 public final class Invariants {

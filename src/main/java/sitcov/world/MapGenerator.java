@@ -26,14 +26,29 @@ public final class MapGenerator {
         return withMovingCars(layout(seed));
     }
 
+    /**
+     * The situation of {@code seed} drawn with the key draws under {@code tilt} (the same as
+     * {@link #generate(long)} under {@link Tilt#NOMINAL}), with their trace: its likelihood under
+     * the generator and under the tilt.
+     */
+    public static TracedMap generate(long seed, Tilt tilt) {
+        Draws draws = new Draws(tilt);
+        WorldMap map = withMovingCars(layout(seed, draws), draws);
+        return new TracedMap(map, draws.trace());
+    }
+
     /** The static layout of {@code seed}, without moving cars (what coverage needs). */
     public static Layout layout(long seed) {
+        return layout(seed, new Draws(Tilt.NOMINAL));
+    }
+
+    private static Layout layout(long seed, Draws draws) {
         RandomStreams streams = new RandomStreams(seed);
-        RoadTreeBuilder tree = new RoadTreeBuilder(streams.stream(ROADS_STREAM));
+        RoadTreeBuilder tree = new RoadTreeBuilder(streams.stream(ROADS_STREAM), draws);
         List<Junction> junctions = tree.build();
         List<Omission> omissions = new ArrayList<>(tree.omissions());
         RoadNetwork network = new RoadNetwork(tree.roads(), junctions);
-        Placement placement = new Placement(network);
+        Placement placement = new Placement(network, draws);
         Placed<ParkedCar> parked = placement.parkedCars(streams.stream(PARKED_CARS_STREAM), omissions);
         Optional<Target> target = placement.target(streams.stream(TARGET_STREAM), parked.items(), omissions);
         Optional<StartPose> start = placement.carStart(streams.stream(CAR_START_STREAM), parked.items(), target, omissions);
@@ -43,8 +58,12 @@ public final class MapGenerator {
 
     /** Adds the moving cars of the layout's seed. */
     public static WorldMap withMovingCars(Layout layout) {
+        return withMovingCars(layout, new Draws(Tilt.NOMINAL));
+    }
+
+    private static WorldMap withMovingCars(Layout layout, Draws draws) {
         RandomStreams streams = new RandomStreams(layout.seed());
-        Placement placement = new Placement(RoadNetwork.of(layout));
+        Placement placement = new Placement(RoadNetwork.of(layout), draws);
         List<Omission> omissions = new ArrayList<>();
         Placed<StartPose> moving = placement.movingCars(streams.stream(MOVING_CARS_STREAM), layout.parkedCars(),
                 layout.carStart(), omissions);

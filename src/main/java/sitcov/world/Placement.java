@@ -17,7 +17,7 @@ import sitcov.geom.Vec2;
 
 /**
  * Places what stands on the roads (the generator's steps after the road tree;
- * README, "Maps and situation files"): parked cars, the Target, the
+ * src/main/java/sitcov/cli/README.md, "Maps and situation files"): parked cars, the Target, the
  * autonomous car's start and the moving cars, each by bounded tries of uniform points. A point
  * found on the last try counts (the original's off-by-one is not kept).
  */
@@ -38,13 +38,19 @@ final class Placement {
     static final double ROOM_AHEAD = 8.0;
 
     private final RoadNetwork network;
+    private final Draws draws;
 
     Placement(RoadNetwork network) {
+        this(network, new Draws(Tilt.NOMINAL));
+    }
+
+    Placement(RoadNetwork network, Draws draws) {
         this.network = network;
+        this.draws = draws;
     }
 
     Placed<ParkedCar> parkedCars(RandomGenerator random, List<Omission> omissions) {
-        int count = (int) (random.nextDouble() * 5) + 5;
+        int count = draws.count(DrawSite.PARKED_CARS, random) + 5;
         List<ParkedCar> cars = new ArrayList<>();
         for (int k = 0; k < count; k++) {
             ParkedCar car = null;
@@ -96,8 +102,8 @@ final class Placement {
 
     Optional<Target> target(RandomGenerator random, List<ParkedCar> parked, List<Omission> omissions) {
         for (int t = 0; t < TARGET_TRIES; t++) {
-            double x = rounded(random.nextDouble() * WORLD_WIDTH);
-            double y = rounded(random.nextDouble() * WORLD_HEIGHT);
+            double x = rounded(draws.coordinate(DrawSite.TARGET_X, random) * WORLD_WIDTH);
+            double y = rounded(draws.coordinate(DrawSite.TARGET_Y, random) * WORLD_HEIGHT);
             Road road = network.roadAt(x, y);
             if (road != null && !network.isInJunction(x, y) && !nearParkedCar(x, y, parked, TARGET_CLEARANCE)) {
                 return Optional.of(new Target(new Vec2(x, y), road.id()));
@@ -110,7 +116,9 @@ final class Placement {
     Optional<StartPose> carStart(RandomGenerator random, List<ParkedCar> parked, Optional<Target> target,
                                  List<Omission> omissions) {
         for (int t = 0; t < START_TRIES; t++) {
-            Optional<StartPose> pose = laneStart(random, parked, AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH);
+            double x = draws.coordinate(DrawSite.START_X, random) * WORLD_WIDTH;
+            double y = draws.coordinate(DrawSite.START_Y, random) * WORLD_HEIGHT;
+            Optional<StartPose> pose = laneStart(x, y, parked, AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH);
             if (pose.isPresent() && target.map(g -> g.position().distanceTo(pose.get().position()) >= MIN_START_TO_TARGET)
                     .orElse(true) && hasRoomAhead(pose.get(), parked)) {
                 return pose;
@@ -122,14 +130,16 @@ final class Placement {
 
     Placed<StartPose> movingCars(RandomGenerator random, List<ParkedCar> parked, Optional<StartPose> carStart,
                                  List<Omission> omissions) {
-        int count = (int) (random.nextDouble() * 15) + 5;
+        int count = draws.count(DrawSite.MOVING_CARS, random) + 5;
         Box car = carStart.map(p -> p.footprint(AUTONOMOUS_CAR_LENGTH, AUTONOMOUS_CAR_WIDTH)).orElse(null);
         List<StartPose> placed = new ArrayList<>();
         List<Box> bodies = new ArrayList<>();
         for (int k = 0; k < count; k++) {
             StartPose found = null;
             for (int t = 0; t < MOVING_CAR_TRIES && found == null; t++) {
-                Optional<StartPose> pose = laneStart(random, parked, CAR_LENGTH, CAR_WIDTH);
+                double x = random.nextDouble() * WORLD_WIDTH;
+                double y = random.nextDouble() * WORLD_HEIGHT;
+                Optional<StartPose> pose = laneStart(x, y, parked, CAR_LENGTH, CAR_WIDTH);
                 if (pose.isEmpty()) {
                     continue;
                 }
@@ -159,10 +169,8 @@ final class Placement {
         return parked.stream().noneMatch(p -> p.footprint().overlaps(room));
     }
 
-    /** A lane start near a uniform point whose footprint is on the road, outside junctions and parked cars. */
-    private Optional<StartPose> laneStart(RandomGenerator random, List<ParkedCar> parked, double length, double width) {
-        double x = random.nextDouble() * WORLD_WIDTH;
-        double y = random.nextDouble() * WORLD_HEIGHT;
+    /** A lane start near the point (x, y) whose footprint is on the road, outside junctions and parked cars. */
+    private Optional<StartPose> laneStart(double x, double y, List<ParkedCar> parked, double length, double width) {
         if (network.isInJunction(x, y)) {
             return Optional.empty();
         }

@@ -17,7 +17,7 @@ import sitcov.geom.Vec2;
 
 /**
  * Grows the road tree of a map (the generator's first steps;
- * README, "Maps and situation files"): a first road, then T-junctions whose
+ * src/main/java/sitcov/cli/README.md, "Maps and situation files"): a first road, then T-junctions whose
  * branch roads touch only their parent, then a dead end at every free road end. All draws come
  * from the one stream it is given.
  */
@@ -32,13 +32,15 @@ final class RoadTreeBuilder {
     private static final int FIRST_ROAD_TRIES = 1000;
 
     private final RandomGenerator random;
+    private final Draws draws;
     private final List<Road> roads = new ArrayList<>();
     private final List<Vec2> tJunctions = new ArrayList<>();
     private final List<Omission> omissions = new ArrayList<>();
     private int attempts;
 
-    RoadTreeBuilder(RandomGenerator random) {
+    RoadTreeBuilder(RandomGenerator random, Draws draws) {
         this.random = random;
+        this.draws = draws;
     }
 
     List<Road> roads() {
@@ -55,7 +57,7 @@ final class RoadTreeBuilder {
 
     /** Builds the tree and returns its junctions: T-junctions first, then dead ends. */
     List<Junction> build() {
-        attempts = (int) (random.nextDouble() * JUNCTION_ATTEMPT_SPREAD) + MIN_JUNCTION_ATTEMPTS;
+        attempts = draws.count(DrawSite.JUNCTION_ATTEMPTS, random) + MIN_JUNCTION_ATTEMPTS;
         roads.add(firstRoad());
         for (int i = 1; i <= attempts; i++) {
             tryJunction(i);

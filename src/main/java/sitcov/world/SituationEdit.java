@@ -8,7 +8,7 @@ import sitcov.geom.Compass;
 import sitcov.geom.Vec2;
 
 /**
- * One change to a situation that a search makes (issue 16): the Target or the car's start moved along
+ * One change to a situation that a search makes: the Target or the car's start moved along
  * its road, the Target or the start placed on any road, a parked car added, moved along its road or
  * removed, a branch road added or removed ({@link BranchRoads}), the moving cars placed afresh from
  * another seed, or several of these in a {@link Chain}. An edit applies to a map and gives the edited

@@ -45,7 +45,8 @@ public final class SituationFile {
     }
 
     /**
-     * Reads a situation file; one that is malformed or breaks a rule of the world (README, "Maps and situation files") is
+     * Reads a situation file; one that is malformed or breaks a rule of the world
+     * (src/main/java/sitcov/cli/README.md, "Maps and situation files") is
      * refused with its name, the line and what was expected there or the rule broken.
      */
     public static WorldMap read(Path file) throws IOException, SituationFormatException {

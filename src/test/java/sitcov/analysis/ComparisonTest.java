@@ -47,12 +47,48 @@ public class ComparisonTest {
         return new Summary(SIX, results);
     }
 
+    /**
+     * n replications: in replication k the filter runs k + 2 maps in as many cells, random as many maps in
+     * one cell; each of the filter's maps finds fault 14, and random's find what {@code randomMarks} says.
+     * Every map costs 300 ticks.
+     */
+    public static Summary filterAheadByUntiedAmounts(int n, String randomMarks) {
+        List<ReplicationResult> results = new ArrayList<>();
+        for (int r = 0; r < n; r++) {
+            List<MapRun> filter = new ArrayList<>();
+            List<MapRun> random = new ArrayList<>();
+            for (int i = 0; i < r + 2; i++) {
+                filter.add(DiscoveryTest.map("coverage-filter", i, 10 * r + i, 10 + i, "F-"));
+                random.add(DiscoveryTest.map("random", i, 100 + 10 * r + i, 50, randomMarks));
+            }
+            results.add(new ReplicationResult(r, List.of(DiscoveryTest.run("coverage-filter", filter.toArray(MapRun[]::new)),
+                    DiscoveryTest.run("random", random.toArray(MapRun[]::new)))));
+        }
+        ExperimentConfig config = config(n, List.of("coverage-filter", "random"));
+        return new Summary(config, results);
+    }
+
+    @Test
+    void aTestWhoseSmallestPIsAboveItsFamilysLevelCouldHaveDetectedNothing() {
+        Comparison c = Comparison.of(SIX, filterAheadByUntiedAmounts(6, "--"), new SplittableRandom(4));
+        // cells covered differ by k + 1 = 1..6, the area by (k + 1) / (2 (k + 2)) (the filter's first map of k + 2
+        // finds one fault of two): untied, so the smallest p is 2/2^6 = 0.03125, above 0.05 / 2 places; Holm
+        // over the two places: 2 × 0.03125 = 0.0625, not shown
+        MeasureComparison cells = measure(c, Measure.CELLS_COVERED);
+        assertEquals(new Families(2, 2, 2, 1, 1), c.families(), "the TOSTs join the two places");
+        assertEquals(0.03125, cells.paired().smallestP(), 1e-12);
+        assertEquals(0.0625, cells.paired().pAdjusted(), 1e-12);
+        assertEquals(Finding.INCONCLUSIVE, cells.finding());
+        assertTrue(Double.isInfinite(cells.paired().detectable()));
+        assertEquals(Finding.INCONCLUSIVE, measure(c, Measure.DISCOVERY_AREA).finding());
+    }
+
     static MeasureComparison measure(Comparison c, Measure m) {
         return c.measures().stream().filter(t -> t.measure() == m).findFirst().orElseThrow();
     }
 
     @Test
-    void thePrimaryQuestionIsTestedOnItsOwnAndTheRestAsOneHolmFamily() {
+    void thePrimaryQuestionIsTestedOnItsOwnTheMeasuresByClosedTestingAndTheFaultsByBenjaminiHochberg() {
         Comparison c = Comparison.of(SIX, filterCoversAndFindsMore(), new SplittableRandom(3));
         // six tied differences of one sign: W+ = 21, variance 6*7*13/24 - (6^3 - 6)/48 = 18.375,
         // z = (21 - 10.5 - 0.5) / sqrt(18.375) = 2.333, two-sided p = 0.0196 (continuity-corrected)
@@ -61,16 +97,21 @@ public class ComparisonTest {
         assertEquals(0.0196, faults.paired().p(), 1e-4);
         assertEquals(faults.paired().p(), faults.paired().pAdjusted(), 0, "the primary test is reported as is");
         assertEquals(Finding.HIGHER_A, faults.finding());
-        // the family: cells covered, the area under the discovery curve and fault 14, each p = 0.0196;
-        // their TOSTs have no spread (every difference alike) and stay out, as do the untestable rows
-        assertEquals(3, c.familySize());
+        // the measures' family: cells covered and the area under the discovery curve, each p = 0.0196, two
+        // places (their TOSTs have no spread, every difference alike, and stay out, as do the untestable rows);
+        // the faults' screening family: fault 14 alone, p = 0.0196
+        assertEquals(new Families(2, 2, 0, 1, 1), c.families());
         MeasureComparison cells = measure(c, Measure.CELLS_COVERED);
         assertEquals(3, cells.paired().meanA(), 1e-12);
         assertEquals(1, cells.paired().meanB(), 1e-12);
         assertEquals(2, cells.paired().difference().low(), 1e-12, "every resample of +2s has mean 2");
-        assertEquals(3 * cells.paired().p(), cells.paired().pAdjusted(), 1e-12, "Holm: three equal p-values, times 3");
-        assertEquals(Finding.INCONCLUSIVE, cells.finding(), "0.059 after Holm: not shown at six replications");
-        assertEquals(Finding.INCONCLUSIVE, c.faults().get(0).finding());
+        assertEquals(2 * cells.paired().p(), cells.paired().pAdjusted(), 1e-12, "Holm over two places: 2 × 0.0196");
+        assertEquals(Finding.HIGHER_A, cells.finding(), "0.039 < 0.05");
+        FaultComparison f14 = c.faults().get(0);
+        assertEquals(f14.paired().p(), f14.paired().pAdjusted(), 1e-12, "BH over one test: q = p");
+        assertEquals(Finding.HIGHER_A, f14.finding());
+        assertEquals(6, cells.paired().higherA(), "the filter covers more in all six replications");
+        assertEquals(1.0, cells.paired().superiority(), 0);
     }
 
     @Test
@@ -210,6 +251,6 @@ public class ComparisonTest {
             assertEquals(Finding.NOT_TESTABLE, f.finding());
             assertEquals("there are no replications to compare", f.note());
         }
-        assertEquals(0, c.familySize());
+        assertEquals(0, c.families().tests());
     }
 }

@@ -181,7 +181,7 @@ class AutonomousCarBehaviourTest {
         // maps where the car crept up behind a parked car and a steep pull-out took it off the far side
         // (map 866 was the third; since the car creeps up to junctions it waited for, it meets its
         // parked car at 0.9 m a tick, nearly level with the pull-out waypoint, steers at the 40° bound
-        // and a corner leaves the far side: a failure class left open, see the README of faults/)
+        // and a corner leaves the far side: a failure class left open, see faults/README.md)
         assertReachedWithoutAccident(630, 824);
     }
 

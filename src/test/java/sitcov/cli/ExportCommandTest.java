@@ -147,6 +147,8 @@ class ExportCommandTest {
         assertTrue(found.size() >= 2, "the small run finds fault 4 on more than one map: " + found.size());
         CliRunner r = CliRunner.run("export", finding().toString(), "--found", "--out", dir.toString());
         assertEquals(ExitCode.OK, r.exitCode(), r.err());
+        assertTrue(r.err().contains("export: found runs judged again: " + found.size() + "/" + found.size() + " (100%)"),
+                "each found run is judged again, with progress: " + r.err());
         List<String> index = Files.readAllLines(dir.resolve("index.csv"));
         List<String> header = List.of(index.get(0).split(","));
         assertEquals(found.size(), index.size() - 1, String.join("\n", index));

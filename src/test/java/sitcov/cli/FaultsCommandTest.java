@@ -26,7 +26,7 @@ class FaultsCommandTest {
         assertTrue(r.out().lines().anyMatch(l -> l.matches("\\s+2  waypoints-north-east\\s+100\\.0%\\s+100\\.0%\\s+100\\.0%.*")),
                 r.out());
         assertTrue(r.out().lines().anyMatch(l -> l.startsWith(" 19  oncoming-at-half-speed")), r.out());
-        assertTrue(r.out().contains("Reproduce: sitcov faults --calibrate --maps 2 --seed 1 --faults 2,19"), r.out());
+        assertTrue(r.out().contains("Reproduce: experiments/sitcov faults --calibrate --maps 2 --seed 1 --faults 2,19"), r.out());
     }
 
     @Test
@@ -74,5 +74,41 @@ class FaultsCommandTest {
         assertEquals(2, r.exitCode());
         assertTrue(r.err().contains("--fork takes on or off, not 'maybe'"), r.err());
         assertEquals("", r.out());
+    }
+
+    @Test
+    void theListingShowsTheSeamFaultsByTheirIds() {
+        CliRunner r = CliRunner.run("faults");
+        assertTrue(r.out().lines().anyMatch(l -> l.startsWith("seam:late-frame ")), r.out());
+        assertEquals(14, r.out().lines().filter(l -> l.startsWith("seam:")).count(), r.out());
+    }
+
+    @Test
+    void seamFaultsAreCalibratedOnTheBuiltinCarForkedAndWholeAlike() {
+        String[] args = {"faults", "--calibrate", "--maps", "2", "--faults", "seam:late-command,seam:lane-offset-bias",
+            "--threads", "2"};
+        CliRunner forked = CliRunner.run(args);
+        assertEquals(0, forked.exitCode(), forked.err());
+        // two ticks late, the builtin car's lane keeping weaves off its lane on both maps; it reads no channel
+        assertTrue(forked.out().lines().anyMatch(l -> l.matches("seam:late-command\\s+100\\.0%\\s+100\\.0%\\s+100\\.0%.*")),
+                forked.out());
+        assertTrue(forked.out().lines().anyMatch(l -> l.matches("seam:lane-offset-bias\\s+0\\.0%\\s+0\\.0%\\s+0\\.0%.*")),
+                forked.out());
+        String[] whole = java.util.Arrays.copyOf(args, args.length + 2);
+        whole[args.length] = "--fork";
+        whole[args.length + 1] = "off";
+        assertEquals(forked.out(), CliRunner.run(whole).out());
+    }
+
+    @Test
+    void anUnknownSeamFaultOrAControllerForSeededFaultsIsRefusedWithExitCode2() {
+        CliRunner unknown = CliRunner.run("faults", "--calibrate", "--maps", "2", "--faults", "seam:fog");
+        assertEquals(2, unknown.exitCode());
+        assertTrue(unknown.err().contains("seam:fog") || unknown.err().contains("'fog'"), unknown.err());
+        assertTrue(unknown.err().contains("radar-dropout"), unknown.err());
+        CliRunner seeded = CliRunner.run("faults", "--calibrate", "--maps", "2", "--faults", "2", "--controller",
+                "exec:python3 experiments/controllers/route_driver.py");
+        assertEquals(2, seeded.exitCode());
+        assertTrue(seeded.err().contains("--faults seam:ALL"), seeded.err());
     }
 }

@@ -35,7 +35,7 @@ class MainTest {
         String[] lines = result.err().split("\\R");
         assertEquals(2, lines.length, result.err());
         assertTrue(lines[0].startsWith("sitcov: unknown option '--frobnicate'"), lines[0]);
-        assertEquals("Run 'sitcov --help' for usage.", lines[1]);
+        assertEquals("Run 'experiments/sitcov --help' for usage.", lines[1]);
     }
 
     @Test
@@ -62,6 +62,6 @@ class MainTest {
         CliRunner result = CliRunner.run("map", "--help");
 
         assertEquals(ExitCode.OK, result.exitCode());
-        assertTrue(result.out().startsWith("Usage: sitcov map --seed S"), result.out());
+        assertTrue(result.out().startsWith("Usage: experiments/sitcov map --seed S"), result.out());
     }
 }

@@ -42,6 +42,10 @@ class RunCommandTest {
         assertTrue(manifest.contains("\nfaulty_runs=until-verdict\n"), "the default is recorded: " + manifest);
         assertTrue(manifest.contains("\ndrivers=coverage-filter,random\n"), manifest);
         assertTrue(a.out().contains("Results in " + one), a.out());
+        List<String> lines = a.out().lines().toList();
+        assertEquals("The report: " + one.resolve(ResultsFolder.REPORT)
+                + " (the verdict, every table and figure on one page; open it in a browser)", lines.get(lines.size() - 1),
+                "the last line names the report: " + a.out());
     }
 
     @Test

@@ -131,7 +131,7 @@ class SimulateCommandTest {
         for (String type : new String[] {"CLASHWITHOBSTACLE", "CLASHWITHOTHERCAR", "LEAVEROAD", "CROSSCENTRELINE"}) {
             assertTrue(result.out().contains(type), type + " missing from:\n" + result.out());
         }
-        assertTrue(result.out().contains("Reproduce: sitcov simulate --maps 3 --seed 1 --summary"), result.out());
+        assertTrue(result.out().contains("Reproduce: experiments/sitcov simulate --maps 3 --seed 1 --summary"), result.out());
         assertFalse(result.out().contains("seed 1 internal 1:"), "--summary leaves out the per-run lines");
         assertTrue(result.err().contains("simulate: 3/3 (100%)"), result.err());
     }
@@ -143,7 +143,7 @@ class SimulateCommandTest {
         assertEquals(ExitCode.OK, result.exitCode(), result.err());
         assertTrue(result.out().startsWith("seed 7 internal 7: "), result.out());
         assertTrue(result.out().contains("\nseed 8 internal 8: "), result.out());
-        assertTrue(result.out().contains("Reproduce: sitcov simulate --maps 2 --seed 7\n"), result.out());
+        assertTrue(result.out().contains("Reproduce: experiments/sitcov simulate --maps 2 --seed 7\n"), result.out());
     }
 
     @Test

@@ -16,7 +16,7 @@ class GridDefinitionTest {
     @Test
     void aCellOfBinsIsTheCellTheirValuesFallIn() {
         GridDefinition paper = GridDefinition.paper();
-        // values in bins 2, 3 and 0 of the paper's criteria (README, "Situation coverage")
+        // values in bins 2, 3 and 0 of the paper's criteria (experiments/README.md, "Situation coverage")
         assertEquals(paper.cellOf(new double[] {12, 130, 5}), paper.cellAt(2, 3, 0));
         assertEquals(paper.cellOf(new double[] {30, 239, 55}), paper.cellAt(5, 5, 5));
         assertEquals(grid.cellOf(new double[] {90, 3}), grid.cellAt(2, 0));

@@ -95,7 +95,7 @@ class AimedEditsTest {
 
     @Test
     void aLongWalkOfTheSearchsEditsKeepsEveryTargetAndParkedCarOnTheRoadItNames() {
-        // issue 26: fault-search wrote a situation whose Target stood on road 11 but named road 16, after a
+        // fault-search once wrote a situation whose Target stood on road 11 but named road 16, after a
         // move along road 16 carried it past the road's end; every edit, before the world's rules are
         // checked, must leave each element naming a road that holds it (or no road at all, which they refuse)
         SplittableRandom choose = new SplittableRandom(26);

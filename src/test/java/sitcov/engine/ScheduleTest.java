@@ -189,4 +189,47 @@ class ScheduleTest {
         assertTrue(state.schedule().isEmpty());
         assertFalse(state.step());
     }
+
+    @Test
+    void aPausedTickGoesOnWhereItPausedAndRunsAsItWouldHaveWhole() {
+        List<String> whole = tenAgentsOverThreeTicks(false);
+        log.clear();
+        List<String> paused = tenAgentsOverThreeTicks(true);
+        assertEquals(whole, paused.stream().filter(e -> !e.endsWith("again")).toList());
+        // agent 3 paused each tick, stepped again first when the tick went on, once a tick
+        assertEquals(3, paused.stream().filter(e -> e.endsWith("3 again")).count());
+        for (int tick = 0; tick < 3; tick++) {
+            int first = paused.indexOf(tick + ":agent 3");
+            assertEquals(tick + ":agent 3 again", paused.get(first + 1));
+        }
+    }
+
+    /** Ten agents of one ordering, shuffled, over ticks 0..2; with {@code pausing}, agent 3 pauses its tick every time. */
+    private List<String> tenAgentsOverThreeTicks(boolean pausing) {
+        SimState state = new SimState(11);
+        Schedule schedule = state.schedule();
+        for (int i = 0; i < 10; i++) {
+            String name = "agent " + i;
+            boolean pauses = pausing && i == 3;
+            boolean[] waiting = {false};
+            schedule.scheduleRepeating(0, 0, 1, s -> {
+                if (waiting[0]) {
+                    waiting[0] = false;
+                    log.add(s.tick() + ":" + name + " again");
+                    return;
+                }
+                log.add(s.tick() + ":" + name);
+                if (pauses) {
+                    waiting[0] = true;
+                    s.schedule().pause();
+                }
+            });
+        }
+        while (state.tick() < 2 || schedule.isPaused()) {
+            boolean pausedBefore = schedule.isPaused();
+            state.step();
+            assertTrue(!pausedBefore || !schedule.isPaused(), "a tick goes on after its pause");
+        }
+        return new ArrayList<>(log);
+    }
 }

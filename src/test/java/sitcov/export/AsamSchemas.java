@@ -23,8 +23,9 @@ import org.xml.sax.SAXParseException;
 /**
  * The ASAM schemas the export is checked against: OpenDRIVE 1.7 and OpenSCENARIO 1.0–1.3, as the
  * pinned scenariogeneration wheel ships them, fetched by .ci/fetch-asam-schemas (which .ci/run calls) into target/asam-schemas/. Missing
- * schemas skip the tests that need them, except under CI=true, where they fail naming the fetch (README,
- * "Export to OpenDRIVE and OpenSCENARIO"). Public for the export command's tests.
+ * schemas skip the tests that need them, except under CI=true, where they fail naming the fetch
+ * (src/main/java/sitcov/export/README.md, "Export to OpenDRIVE and OpenSCENARIO"). Public for the export command's
+ * tests.
  */
 public final class AsamSchemas {
     static final Path DIR = Path.of("target", "asam-schemas");

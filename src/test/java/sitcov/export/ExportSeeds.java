@@ -4,7 +4,8 @@ import java.util.stream.LongStream;
 
 /**
  * The external seeds the export's tests run over: maps 1..N, N from {@code -Dsitcov.export.seeds=N}, and runs
- * recorded on maps 1..R, R from {@code -Dsitcov.export.runs=R} (README, "Export to OpenDRIVE and OpenSCENARIO").
+ * recorded on maps 1..R, R from {@code -Dsitcov.export.runs=R} (src/main/java/sitcov/export/README.md, "Export to
+ * OpenDRIVE and OpenSCENARIO").
  */
 final class ExportSeeds {
     static final String PROPERTY = "sitcov.export.seeds";

@@ -6,7 +6,8 @@ import sitcov.geom.Vec2;
 import sitcov.world.Dimensions;
 
 /**
- * sitcov's world frame as OpenDRIVE and OpenSCENARIO see it (README, the export's conventions): x stays,
+ * sitcov's world frame as OpenDRIVE and OpenSCENARIO see it (src/main/java/sitcov/export/README.md, "The frame"): x
+ * stays,
  * y = 100 − sitcov y (sitcov's y grows southwards), heading counter-clockwise from +x in radians.
  */
 final class Frame {

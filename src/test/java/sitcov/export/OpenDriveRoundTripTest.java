@@ -23,7 +23,7 @@ import sitcov.world.WorldMap;
 
 /**
  * The OpenDRIVE export read back and evaluated independently (OpenDriveModel) lands on sitcov's own roads,
- * lanes and junctions within a centimetre, on many seeds (README, the export's conventions).
+ * lanes and junctions within a centimetre, on many seeds (src/main/java/sitcov/export/README.md, "The frame").
  */
 class OpenDriveRoundTripTest {
     private static final double HALF = Dimensions.JUNCTION_SIZE / 2;

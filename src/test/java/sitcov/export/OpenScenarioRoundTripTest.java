@@ -33,7 +33,8 @@ import sitcov.world.WorldMap;
  * The OpenSCENARIO export read back: every vehicle stands where sitcov has its footprint (the centre, the
  * heading), the ego is sent to the Target, and a recorded run's trajectories, interpolated linearly between the
  * vertices kept, retrace the pose a watcher of the same run saw at every tick, vehicles off the map are teleported
- * off the world, and the run's accidents are declared as parameters (README, the export's conventions).
+ * off the world, and the run's accidents are declared as parameters (src/main/java/sitcov/export/README.md, "The
+ * frame").
  */
 class OpenScenarioRoundTripTest {
     /** A run with both kinds of clash, short enough to check quickly: map 33, its own internal seed, fault 14. */

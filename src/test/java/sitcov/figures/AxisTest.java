@@ -21,7 +21,7 @@ class AxisTest {
             assertTrue(axis.last() >= max && axis.last() < Axis.MAX_OVERSHOOT * max, max + " -> " + axis);
             assertTrue(max < 4 || divisions(axis) >= 4 && divisions(axis) <= 8, max + " -> " + axis);
         }
-        // the faults-vs-ticks axis of issue 26 ran to 200000 for 107000 ticks (smoke); 5100 ran to 10000
+        // the faults-vs-ticks axis once ran to 200000 for 107000 ticks (smoke); 5100 ran to 10000
         assertEquals(125000, Axis.counts(107000).last(), 0);
         assertEquals(List.of(0.0, 1000.0, 2000.0, 3000.0, 4000.0, 5000.0, 6000.0), Axis.counts(5100).ticks());
         assertEquals(List.of(0.0, 1.0, 2.0), Axis.counts(2).ticks(), "a small count: a label per unit, no 0.4s");

@@ -24,7 +24,8 @@ import sitcov.world.WorldMap;
 
 /**
  * The near-miss watcher on real runs. The reference car has accidents of its own on a few random
- * maps (README, faults/README.md): on maps 1..400, with the internal seed equal to the map's, map 86
+ * maps (faults/README.md, "How close to failure: near misses and robustness"): on maps 1..400, with the internal
+ * seed equal to the map's, map 86
  * times out, 147 hits a moving car, 212 crosses the centre line, 325 leaves the road, 387 touches a
  * parked car, and on 302 a moving car on the centre line touches it (an excused contact).
  */

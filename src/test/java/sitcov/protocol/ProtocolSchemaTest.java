@@ -235,7 +235,7 @@ class ProtocolSchemaTest {
                 });
         try (BatchingProxy two = Pipes.batching(recorded, 2)) {
             assertEquals(2, two.batch());
-            two.runAll(2, (i, f) -> Simulator.run(MapGenerator.generate(i + 2), i + 2, Set.of(), RunObserver.NONE, f));
+            sitcov.judge.BatchedRuns.run(2, two, (i, f) -> new sitcov.judge.LiveRun(MapGenerator.generate(i + 2), i + 2, Set.of(), f));
         }
         List<Case> cases = new ArrayList<>();
         Set<String> types = new HashSet<>();

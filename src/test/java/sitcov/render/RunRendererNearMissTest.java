@@ -63,7 +63,7 @@ class RunRendererNearMissTest {
         assertTrue(parked.value() > 0 && parked.value() < 1, "the near miss: " + parked.text());
     }
 
-    /** Map 866 leaves the road (README: "a pull-out at low speed ... puts a corner off the far side"). */
+    /** Map 866 leaves the road (faults/README.md, "How mature the car is": "a pull-out at low speed ... puts a corner off the far side"). */
     @Test
     void aMarginAnAccidentAlreadyMarksIsLeftToItsMarkerAndTheCaptionsLeastRhoIsThatAccidents() {
         Drawn run = Drawn.of(866);

@@ -18,7 +18,7 @@ import sitcov.world.Situations;
 import sitcov.world.WorldMap;
 
 /**
- * The world's rules as the README states them ("How the car moves"): its worked example of one
+ * The world's rules as experiments/controllers/README.md, "How the car moves" states them: its worked example of one
  * command and the next pose, driven through the controller seam; the junction-claim rules, whose
  * breach ends the run in CONTROLLER_ERROR naming the rule; and the count of clamped ticks.
  */
@@ -38,7 +38,7 @@ class WorldRulesTest {
             }
         }, 2);
         assertArrayNear(new double[] {40, 48.5, 90, 0}, poses.get(0), 1e-12);
-        // README: heading 100; the rear axle, 1.5 m behind the front, stays at (38.5, 48.5); the front
+        // the worked example: heading 100; the rear axle, 1.5 m behind the front, stays at (38.5, 48.5); the front
         // swings to (39.9772, 48.2395) and then moves 1.5 m along bearing 100 to (41.4544, 47.9791)
         assertArrayNear(new double[] {41.4544, 47.9791, 100, 1.5}, poses.get(1), 5e-5);
         double h = Math.toRadians(100);

@@ -26,24 +26,30 @@ class VerdictTextTest {
     }
 
     @Test
-    void exploratoryFindingsSayWhatTheFamilyAllowsAndNotTestableRowsSaySo() {
+    void exploratoryFindingsSayWhatTheirFamilyAllowsAndNotTestableRowsSaySo() {
         String text = String.join("\n", VerdictText.lines(COMPARISON, List.of(), BudgetKind.TICKS));
-        assertTrue(text.contains("- cells covered: inconclusive, 3.00 against 1.00 (+2.00, CI 2.00 to 2.00; difference Holm"
-                + " p = 0.059)"), text);
+        // cells covered and the area, p = 0.0196 each, two places of the measures' family: Holm 2 × 0.0196 = 0.039
+        assertTrue(text.contains("- cells covered: higher for coverage-filter, 3.00 against 1.00 (+2.00, CI 2.00 to 2.00;"
+                + " Holm p = 0.039; coverage-filter higher in 6 of 6 replications, random in 0)."), text);
         assertTrue(text.contains("- maps run: not testable: it is 3 in every replication of both."), text);
-        assertTrue(text.contains("the other 3 tests (2 differences of measures, 1 per-fault difference)"), text);
+        assertTrue(text.contains("Measures (2 of pairs, 2 difference tests)"), text);
+        assertTrue(text.contains("Faults (1 test): a screening family under Benjamini-Hochberg"), text);
+        // fault 14 alone in the screening: q = p = 0.0196
+        assertTrue(text.contains("found on a larger share of coverage-filter's maps: fault 14 (100.0 % of"
+                + " coverage-filter's maps against 0.0 % of random's, +100.0 points, CI 100.0 to 100.0; BH q = 0.020)"), text);
         assertTrue(text.contains("not tested: fault 19 (found by neither driver)"), text);
         assertFalse(text.contains("no significant difference"), "no 'no difference' without a margin: " + text);
-        assertFalse(text.contains("Too few replications"), "six replications can reach 0.03125: " + text);
+        assertTrue(text.contains("With 6 paired replications the 95 % CIs only describe"), text);
     }
 
     @Test
-    void fiveReplicationsAreSaidOnceToBeTooFewForAnyRankTest() {
-        String caveat = VerdictText.fewReplications(5).orElseThrow();
-        assertTrue(caveat.contains("with 5 paired replications no signed-rank test can reach p < 0.05 (its smallest"
-                + " two-sided p is 2/2^5 = 0.0625)"), caveat);
+    void fiveReplicationsAreSaidOnceToBeTooFewForAnyRankTestAndTenToFewForCIs() {
+        String caveat = Reading.fewReplications(5).orElseThrow();
+        assertTrue(caveat.startsWith("Nothing below is tested for a difference: with 5 paired replications no signed-rank"
+                + " test can reach p < 0.05 (its smallest two-sided p is 2/2^5 = 0.0625)"), caveat);
         assertTrue(caveat.contains("describe the differences, they do not test them"), caveat);
-        assertTrue(VerdictText.fewReplications(6).isEmpty());
+        assertTrue(Reading.fewReplications(10).orElseThrow().contains("CIs only describe"));
+        assertTrue(Reading.fewReplications(11).isEmpty());
     }
 
     @Test
@@ -51,18 +57,37 @@ class VerdictTextTest {
         List<String> lines = VerdictText.lines(COMPARISON, List.of(), BudgetKind.TICKS);
         int heading = lines.indexOf("## coverage-filter against random (6 paired replications)");
         assertTrue(heading > 0, lines.toString());
-        // by hand: the primary (distinct faults) is higher for coverage-filter; cells covered and area are
-        // inconclusive, maps run, faults per map and the all-fault share not testable: 5 show nothing
-        assertEquals("In short: coverage-filter is ahead on distinct faults found (the primary question); the other 5"
-                + " measures show no difference.", lines.get(heading + 1));
+        // by hand: cells covered, the primary (distinct faults) and the area are higher for coverage-filter, and
+        // fault 14 flagged; maps run, faults per map and the all-fault share are not testable
+        assertEquals("In short: coverage-filter is ahead on cells covered, distinct faults found (the primary question),"
+                + " area under faults found against ticks and fault 14 (found on more of its maps, screening); 3 measures"
+                + " not testable.", lines.get(heading + 1));
+    }
+
+    @Test
+    void wherePairCanReachTheLevelItsBottomLineSaysNothingWasTestedAndDescribesTheLargestDifferences() {
+        // five replications, both drivers finding fault 14 on every map: only cells covered differs (by 1..5)
+        Comparison five = Comparison.of(ComparisonTest.config(5, List.of("coverage-filter", "random")),
+                ComparisonTest.filterAheadByUntiedAmounts(5, "F-"), new SplittableRandom(3));
+        List<String> lines = VerdictText.lines(five, List.of(), BudgetKind.TICKS);
+        String inShort = lines.get(lines.indexOf("## coverage-filter against random (5 paired replications)") + 1);
+        // the filter's cells 2..6, mean 4, random's 1; differences 1..5 (sd 1.581) lie within the margin of ±5:
+        // t = (3 - 5) / (1.581 / sqrt 5) = -2.83 on 4 df, one-sided p = 0.024, the measures' family's only place
+        assertTrue(inShort.startsWith("In short: no difference tested (with 5 paired replications no signed-rank test can"
+                + " reach 5 %); equivalent in cells covered; the largest differences, described: cells covered 4.00 against"
+                + " 1.00 (+3.00, CI "), inShort);
+        assertFalse(inShort.contains("no difference shown"), inShort);
+        assertTrue(lines.get(1).startsWith("Answer: not testable"), lines.get(1));
     }
 
     @Test
     void testsNoDifferenceCouldPassAtThisNAreSaidOnceNotOnEveryLine() {
-        List<String> lines = VerdictText.lines(COMPARISON, List.of(), BudgetKind.TICKS);
-        // 3 exploratory tests, Holm's first level 0.05/3 < 0.03125, the smallest p of 6 pairs
+        Comparison c = Comparison.of(ComparisonTest.config(6, List.of("coverage-filter", "random")),
+                ComparisonTest.filterAheadByUntiedAmounts(6, "--"), new SplittableRandom(3));
+        List<String> lines = VerdictText.lines(c, List.of(), BudgetKind.TICKS);
+        // cells covered and the area: smallest p 2/2^6 = 0.03125, above 0.05 / 2 places
         assertEquals(1, lines.stream().filter(l -> l.contains("could not have shown a difference, however large")).count());
-        assertTrue(lines.stream().anyMatch(l -> l.startsWith("3 of the exploratory tests below (2 of measures, 1 per fault)")),
+        assertTrue(lines.stream().anyMatch(l -> l.startsWith("2 of the exploratory tests below (2 of measures, 0 per fault)")),
                 lines.toString());
         assertTrue(lines.stream().noneMatch(l -> l.startsWith("- ") && l.contains("at this n")), lines.toString());
     }

@@ -69,7 +69,7 @@ class SituationEditTest {
 
     @Test
     void editsReachAStartTwoHundredMetresFromTheTargetThatNoRandomMapOfAMillionHad() {
-        // issue 16's question: is a start 200 m or more from the Target possible in a 200 x 100 m world?
+        // the coverage question: is a start 200 m or more from the Target possible in a 200 x 100 m world?
         // Map 603's roads reach near opposite corners; sliding its start 40 m back and its Target 8 m on
         // along their roads puts them 201.5 m apart, every rule of the world kept
         WorldMap map = MapGenerator.generate(603);
@@ -170,7 +170,7 @@ class SituationEditTest {
 
     @Test
     void aParkedCarWithinSixMetresOfATargetTwoHundredMetresFromTheStartIsPossible() throws Exception {
-        // issue 16's question for the cells nothing reached: one of them, C1 1.01-6.01 m in start-target's
+        // the same question for the cells nothing reached: one of them, C1 1.01-6.01 m in start-target's
         // last bin. A situation coverage-search built (start near the north-east corner, Target near the west
         // edge) and a parked car added at the kerb 5 m behind the Target: every rule kept, the car runnable
         WorldMap far = SituationFile.read(java.nio.file.Path.of("src", "test", "resources", "situations",
@@ -262,7 +262,7 @@ class SituationEditTest {
     }
     @Test
     void aTargetOrParkedCarSlidPastItsRoadsEndOntoAnotherRoadNamesTheRoadItLandsOn() {
-        // issue 26: a slide past a road's end, across a gap or a crossing road, can land on another road;
+        // a slide past a road's end, across a gap or a crossing road, can land on another road;
         // the moved element kept its old road's id, which the car's route and the spacing rule then trusted
         int targets = 0;
         int cars = 0;

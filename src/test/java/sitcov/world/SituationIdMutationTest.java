@@ -10,8 +10,9 @@ import org.junit.jupiter.api.Test;
 import sitcov.geom.Vec2;
 
 /**
- * A situation file whose ids or junction arms contradict its geometry is refused (README, "Maps and
- * situation files"): generated maps are written, then one id or one arm length is changed in the text.
+ * A situation file whose ids or junction arms contradict its geometry is refused
+ * (src/main/java/sitcov/cli/README.md, "Maps and situation files"): generated maps are written, then one id or one
+ * arm length is changed in the text.
  */
 class SituationIdMutationTest {
     /** Maps with T-junctions, several parked cars and a Target each (checked in the first test). */

@@ -1,4 +1,4 @@
-package sitcov.vehicles;
+package sitcov.engine;
 
 import java.util.AbstractList;
 import java.util.List;
@@ -9,10 +9,10 @@ import java.util.RandomAccess;
  * The JDK's unmodifiable view would do, but a checkpoint cannot see which list it views; this one
  * it copies with the list.
  */
-final class ReadOnlyView<T> extends AbstractList<T> implements RandomAccess {
+public final class ReadOnlyView<T> extends AbstractList<T> implements RandomAccess {
     private List<T> viewed;
 
-    ReadOnlyView(List<T> viewed) {
+    public ReadOnlyView(List<T> viewed) {
         this.viewed = viewed;
     }
 

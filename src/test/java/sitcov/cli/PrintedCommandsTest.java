@@ -26,8 +26,9 @@ class PrintedCommandsTest {
     void theReproduceLineAndTheSeedsHintsOfSimulateNameTheController() {
         CliRunner r = CliRunner.run("simulate", "--maps", "12", "--summary", "--controller", "builtin:16");
         assertEquals(ExitCode.OK, r.exitCode(), r.err());
-        String reproduce = r.out().lines().filter(l -> l.startsWith("Reproduce: sitcov ")).findFirst().orElseThrow();
-        List<String> args = PrintedCommands.shellWords(reproduce.substring("Reproduce: sitcov ".length()));
+        String prefix = "Reproduce: " + Main.LAUNCHER + " ";
+        String reproduce = r.out().lines().filter(l -> l.startsWith(prefix)).findFirst().orElseThrow();
+        List<String> args = PrintedCommands.shellWords(reproduce.substring(prefix.length()));
         assertEquals(List.of("simulate", "--maps", "12", "--seed", "1", "--summary", "--controller", "builtin:16"), args);
         CliRunner again = CliRunner.run(args.toArray(String[]::new));
         assertEquals(r.out(), again.out(), "the printed command gives the same table");

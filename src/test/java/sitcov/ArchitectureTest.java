@@ -33,7 +33,7 @@ class ArchitectureTest {
 
     /** Packages that compute and write text only: no drawing, no window. */
     private static final Set<String> HEADLESS = union(SIMULATION,
-            "builtin", "judge", "experiment", "drivers", "analysis", "verdict", "results", "export", "protocol", "estimate");
+            "builtin", "judge", "experiment", "drivers", "analysis", "verdict", "results", "export", "protocol", "estimate", "recording");
 
     /**
      * Which sitcov packages each package may import (its own is always allowed). Every arrow points down:
@@ -72,14 +72,16 @@ class ArchitectureTest {
             Map.entry("estimate", union(SIMULATION, "judge", "drivers")),
             // maps, situations and recorded runs in the ASAM formats: a run of the builtin car is all it needs
             Map.entry("export", union(SIMULATION, "judge")),
-            Map.entry("render", union(SIMULATION, "judge", "experiment", "results")),
+            // a results folder's recordings: the commands of its failing runs, replayed without their controller
+            Map.entry("recording", union(SIMULATION, "judge", "experiment", "results")),
+            Map.entry("render", union(SIMULATION, "judge", "experiment", "results", "recording")),
             Map.entry("figures", union(SIMULATION, "judge", "experiment", "analysis", "verdict", "results", "render")),
             Map.entry("report", union(SIMULATION, "judge", "experiment", "analysis", "verdict", "results", "render",
-                    "figures")),
+                    "figures", "recording")),
             Map.entry("viewer", union(SIMULATION, "judge", "experiment", "analysis", "verdict", "results", "render",
-                    "figures", "report")),
+                    "figures", "report", "recording")),
             Map.entry("cli", union(SIMULATION, "judge", "experiment", "drivers", "analysis", "verdict", "results",
-                    "export", "render", "figures", "report", "viewer", "protocol", "builtin", "estimate")));
+                    "export", "render", "figures", "report", "viewer", "protocol", "builtin", "estimate", "recording")));
 
     private static final Pattern SITCOV_REFERENCE = Pattern.compile("\\bsitcov\\.([a-z]+)\\.");
     private static final Pattern GUI_REFERENCE = Pattern.compile("\\b(java\\.awt|javax\\.swing)\\b");

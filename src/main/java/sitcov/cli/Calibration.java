@@ -36,7 +36,10 @@ final class Calibration {
     private final List<Long> controllerSeeds = new ArrayList<>();
     private final String controller;
 
-    /** The calibration of {@code controller} ({@code builtin}, or as {@code --controller} named it). */
+    /**
+     * The calibration of the controller {@code controller} names: the options that run it again, as
+     * {@link #controllerArgs} gives them (empty for the builtin car).
+     */
     Calibration(long firstSeed, int maps, boolean summaryOnly, String controller) {
         this.firstSeed = firstSeed;
         this.maps = maps;
@@ -118,17 +121,30 @@ final class Calibration {
         listSeeds(out, "Seeds with an accident besides TIMEOUT", accidentSeeds, withAccidentBesidesTimeout);
         listSeeds(out, "Seeds that timed out", timeoutSeeds, runs - reached - failed);
         listSeeds(out, "Seeds where the controller failed", controllerSeeds, failed);
-        String args = "simulate --maps " + maps + " --seed " + firstSeed + (summaryOnly ? " --summary" : "")
-                + (controller.equals("builtin") ? "" : " --controller '" + controller + "'");
+        String args = "simulate --maps " + maps + " --seed " + firstSeed + (summaryOnly ? " --summary" : "") + controller;
         out.println("Reproduce: " + Main.LAUNCHER + " " + args);
     }
 
-    private static void listSeeds(PrintStream out, String what, List<Long> seeds, int total) {
+    private void listSeeds(PrintStream out, String what, List<Long> seeds, int total) {
         if (!seeds.isEmpty()) {
             out.println(what + (total > seeds.size() ? " (first " + seeds.size() + ")" : "") + ": "
                     + String.join(", ", seeds.stream().map(String::valueOf).toList())
-                    + "; see one with: simulate --seed S --png run.png");
+                    + "; see one with: simulate --seed S" + controller + " --png run.png");
         }
+    }
+
+    /**
+     * The options that run {@code controller} again as it ran here: none for the builtin car, else
+     * {@code --controller} quoted for a POSIX shell, and the per-tick timeout when it was not the default.
+     */
+    static String controllerArgs(String controller, java.util.OptionalInt tickTimeout) {
+        String args = controller.equals("builtin") ? "" : " --controller " + shellQuoted(controller);
+        return args + (tickTimeout.isPresent() ? " --tick-timeout " + tickTimeout.getAsInt() : "");
+    }
+
+    /** {@code text} as one word of a POSIX shell: in single quotes, each of its own written '\''. */
+    static String shellQuoted(String text) {
+        return "'" + text.replace("'", "'\\''") + "'";
     }
 
     private void row(PrintStream out, String label, int count, String target) {

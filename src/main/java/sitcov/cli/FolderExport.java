@@ -16,6 +16,10 @@ import sitcov.judge.FaultVerdict;
 import sitcov.judge.JudgedMap;
 import sitcov.judge.MapRunner;
 import sitcov.oracle.Accident;
+import sitcov.judge.RunObserver;
+import sitcov.recording.FolderRecordings;
+import sitcov.recording.Recording;
+import sitcov.recording.RecordingFile;
 import sitcov.results.ResultsRows;
 import sitcov.world.WorldMap;
 
@@ -60,10 +64,21 @@ final class FolderExport {
         }
         int number = options.count("--row", 1, Integer.MAX_VALUE).orElseThrow();
         ResultsRows.Row row = ResultsRows.row(folder, number);
-        RecordedRows.refuseOtherController("export", folder, row);
         WorldMap map = ResultsRows.worldMap(folder, row.map());
         String base = "row-" + number;
         List<ExportCommand.Planned> files = new ArrayList<>(ExportCommand.mapFiles(base, map, version));
+        if (FolderRecordings.has(folder, row)) {
+            replayed(folder, row, map);
+            files.add(fromRecording(base + "-run.xosc", base + ".xodr", folder, row, map, false, Long.MAX_VALUE, version));
+            if (row.variant().isPresent()) {
+                files.add(fromRecording(base + "-run-fault-free.xosc", base + ".xodr", folder, row, map, true,
+                        Long.MAX_VALUE, version));
+            }
+            return new ExportCommand.Plan(files, to -> "Exported row " + number + " of " + folder + ", replayed from its"
+                    + " recordings, to " + to + ": " + String.join(", ", files.stream().map(ExportCommand.Planned::name)
+                    .toList()) + ".");
+        }
+        RecordedRows.refuseOtherController("export", folder, row);
         Set<Fault> faults = row.fault().map(Set::of).orElse(Set.of());
         checked(row, map);
         files.add(ExportCommand.recording(base + "-run.xosc", base + ".xodr", map, row.map().internalSeed(), faults,
@@ -96,7 +111,6 @@ final class FolderExport {
             throw new UsageException("export: no run in " + folder + " found " + only.map(f -> "fault "
                     + f.stream().map(Fault::id).sorted().toList()).orElse("a fault") + "; there is nothing to export.");
         }
-        RecordedRows.refuseOtherController("export", folder, found.get(0));
         List<ExportCommand.Planned> files = new ArrayList<>();
         List<String> index = new ArrayList<>(List.of(INDEX_HEADER));
         Progress progress = new Progress(err, "export: found runs judged again", found.size(),
@@ -106,8 +120,18 @@ final class FolderExport {
             WorldMap map = ResultsRows.worldMap(folder, row.map());
             files.addAll(ExportCommand.mapFiles(base, map, version));
             // every row is judged again before anything is written: a folder of another sitcov leaves nothing behind
+            if (FolderRecordings.has(folder, row)) {
+                FaultVerdict verdict = replayed(folder, row, map).verdict().orElseThrow();
+                index.add(indexLine(row, verdict, base));
+                progress.done(index.size() - 1);
+                Optional<Accident> failure = verdict.newAccident();
+                long until = failure.map(a -> a.tick() + AFTER_FAILURE_TICKS).orElse(Long.MAX_VALUE);
+                files.add(fromRecording(base + "-run.xosc", base + ".xodr", folder, row, map, false, until, version));
+                continue;
+            }
+            RecordedRows.refuseOtherController("export", folder, row);
             JudgedMap judged = checked(row, map);
-            index.add(indexLine(row, judged, base));
+            index.add(indexLine(row, judged.verdicts().get(0), base));
             progress.done(index.size() - 1);
             long failure = judged.verdicts().get(0).newAccident().orElseThrow().tick();
             files.add(new ExportCommand.Planned(base + "-run.xosc", () -> OpenScenario.recording(
@@ -118,6 +142,29 @@ final class FolderExport {
         return new ExportCommand.Plan(files, to -> "Exported the " + found.size() + " runs of " + folder
                 + " that found a fault to " + to + ": each one's map, situation and faulty run (recorded to 5 s after the accident"
                 + " that found it); " + ExportCommand.INDEX + " lists them.");
+    }
+
+    /** The row replayed from its recordings; it must give what runs.csv recorded, or the export stops. */
+    private static FolderRecordings.Replayed replayed(Path folder, ResultsRows.Row row, WorldMap map) throws IOException {
+        try {
+            return FolderRecordings.replay(folder, row, map, RunObserver.NONE, RunObserver.NONE).orElseThrow();
+        } catch (IllegalArgumentException e) {
+            throw new ExportCommand.RowMismatch(e.getMessage());
+        }
+    }
+
+    /**
+     * The row's own run ({@code reference}: its reference's), replayed from its recording to the end of tick
+     * {@code until} at most (a controller failure ends it where it failed; a run the experiment stopped at its
+     * verdict, there), as an OpenSCENARIO recording.
+     */
+    private static ExportCommand.Planned fromRecording(String name, String roadFile, Path folder, ResultsRows.Row row,
+                                                       WorldMap map, boolean reference, long until,
+                                                       ScenarioVersion version) throws IOException {
+        Recording r = RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, reference)));
+        Set<Fault> faults = reference ? Set.of() : row.fault().map(Set::of).orElse(Set.of());
+        return new ExportCommand.Planned(name, () -> OpenScenario.recording(RunRecording.replayed(map, r.internalSeed(),
+                r.commands(), r.stopAfter(), faults).until(until), roadFile, version));
     }
 
     /** The row judged again; it must give what runs.csv recorded, or the export stops. */
@@ -132,15 +179,17 @@ final class FolderExport {
         return judged;
     }
 
-    private static String indexLine(ResultsRows.Row row, JudgedMap judged, String base) {
-        FaultVerdict verdict = judged.verdicts().get(0);
-        Accident a = verdict.newAccident().orElseThrow();
+    /** The row's line of index.csv; a controller's failure has no place, so its x and y are left empty. */
+    private static String indexLine(ResultsRows.Row row, FaultVerdict verdict, String base) {
+        Optional<Accident> accident = verdict.newAccident();
+        long tick = accident.map(Accident::tick).orElse(verdict.faultyRun().ticks() - 1);
+        String what = accident.map(a -> a.type().name()).orElse(verdict.newFailure().map(Object::toString).orElse(""));
         return String.join(",", List.of(Integer.toString(row.number()), Integer.toString(row.map().replication()),
                 row.map().driver(), Integer.toString(row.map().mapIndex()), Long.toString(row.map().externalSeed()),
-                Long.toString(row.map().internalSeed()), Integer.toString(verdict.variant().id()), a.type().name(),
-                Long.toString(a.tick()), String.format(java.util.Locale.ROOT, "%.1f", AsamFrame.seconds(a.tick())),
-                String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.x(a.x())),
-                String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.y(a.y())), base + ".xodr", base + ".xosc",
-                base + "-run.xosc"));
+                Long.toString(row.map().internalSeed()), Integer.toString(verdict.variant().id()), what,
+                Long.toString(tick), String.format(java.util.Locale.ROOT, "%.1f", AsamFrame.seconds(tick)),
+                accident.map(a -> String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.x(a.x()))).orElse(""),
+                accident.map(a -> String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.y(a.y()))).orElse(""),
+                base + ".xodr", base + ".xosc", base + "-run.xosc"));
     }
 }

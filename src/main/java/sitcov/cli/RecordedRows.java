@@ -16,6 +16,12 @@ final class RecordedRows {
     private RecordedRows() {
     }
 
+    /** Whether the row's runs are the builtin car's as the folder's experiment ran it (with its seeded fault, if any). */
+    static boolean ofTheBuiltinCar(ResultsRows.Row row) {
+        return row.config().controller().equals(ExperimentConfig.BUILTIN)
+                && row.variant().filter(v -> v instanceof Variant.Controller).isEmpty();
+    }
+
     /** Refuses a row of a folder that tested another controller: these commands run the builtin car. */
     static void refuseOtherController(String command, Path folder, ResultsRows.Row row) throws UsageException {
         java.util.Optional<Variant> seam = row.variant().filter(v -> v instanceof Variant.Seam);
@@ -25,7 +31,7 @@ final class RecordedRows {
                     + " builtin car without seam faults; pick a row of the reference or of another variant.");
         }
         java.util.Optional<Variant> other = row.variant().filter(v -> v instanceof Variant.Controller);
-        if (row.config().controller().equals(ExperimentConfig.BUILTIN) && other.isEmpty()) {
+        if (ofTheBuiltinCar(row)) {
             return;
         }
         // the row's own controller: a variant that is a controller of its own, else the reference (with its seeded fault)
@@ -62,13 +68,13 @@ final class RecordedRows {
     static Optional<String> differences(ResultsRows.Row row, JudgedMap judged) {
         RunSummary recorded = row.map().faultFree();
         RunSummary replayed = RunSummary.of(judged.faultFree());
-        if (!recorded.equals(replayed)) {
+        if (!recorded.agrees(replayed)) {
             return Optional.of("the fault-free run was recorded as " + words(recorded) + ", it now gives " + words(replayed));
         }
         if (row.outcome().isPresent()) {
             FaultOutcome was = row.outcome().get();
             FaultOutcome now = FaultOutcome.of(judged.verdicts().get(0));
-            if (!was.equals(now)) {
+            if (!was.agrees(now)) {
                 return Optional.of("fault " + was.variant().id() + " was recorded as " + words(was) + ", it now gives "
                         + words(now));
             }

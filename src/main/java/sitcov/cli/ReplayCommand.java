@@ -20,7 +20,9 @@ import sitcov.render.FrameRecorder;
 import sitcov.render.OutcomeText;
 import sitcov.render.ReplayAnimation;
 import sitcov.render.ReplayPicture;
+import sitcov.render.RowReplay;
 import sitcov.render.RunRenderer;
+import sitcov.recording.FolderRecordings;
 import sitcov.render.TrajectoryRecorder;
 import sitcov.results.ResultsRows;
 import sitcov.world.MapGenerator;
@@ -56,7 +58,7 @@ final class ReplayCommand implements Command {
 
     /** What to replay: the map, its internal seed, the fault (empty: fault-free only), and the row it must match. */
     private record Case(WorldMap map, long internalSeed, Optional<Fault> fault, FaultyRuns length,
-                        Optional<ResultsRows.Row> row) {
+                        Optional<ResultsRows.Row> row, Optional<Path> recordedIn, boolean drawnFromRecordings) {
     }
 
     @Override
@@ -64,6 +66,9 @@ final class ReplayCommand implements Command {
         Options options = Options.parse(name(), args, Set.of("--row", "--replication", "--driver", "--map", "--fault",
                 "--seed", "--internal-seed", "--load", "--png", "--gif"), Set.of());
         Case c = options.positional().isEmpty() ? fromSeeds(options) : fromFolder(options);
+        if (c.drawnFromRecordings()) {
+            return fromRecordings(c, options, out, err);
+        }
         String name = "replay-" + c.map().seed() + "-" + c.internalSeed() + c.fault().map(f -> "-fault-" + f.id()).orElse("")
                 + ".png";
         Path png = options.outputFile("--png", Path.of(name));
@@ -77,6 +82,14 @@ final class ReplayCommand implements Command {
                         + ". Was the folder written by another version of sitcov? (see its manifest)");
                 return ExitCode.FAILURE;
             }
+            if (c.recordedIn().isPresent()) {
+                try {
+                    FolderRecordings.replay(c.recordedIn().get(), c.row().get(), c.map(), RunObserver.NONE, RunObserver.NONE);
+                } catch (IllegalArgumentException | IOException e) {
+                    err.println("sitcov: replay: " + e.getMessage() + ".");
+                    return ExitCode.FAILURE;
+                }
+            }
             out.println("Row " + c.row().get().number() + " replays exactly as runs.csv recorded it.");
         }
         outcomes(c, judged, out);
@@ -87,6 +100,53 @@ final class ReplayCommand implements Command {
             return ExitCode.FAILURE;
         }
         out.println("Replay drawn to " + png + (c.fault().isPresent() ? " (left without the fault, right with it)" : ""));
+        gif.ifPresent(g -> out.println("Animated in " + g));
+        return ExitCode.OK;
+    }
+
+    /** A row the folder recorded, replayed from its recordings: no controller runs, builtin or not. */
+    private static int fromRecordings(Case c, Options options, PrintStream out, PrintStream err) throws UsageException {
+        ResultsRows.Row row = c.row().orElseThrow();
+        Path folder = c.recordedIn().orElseThrow();
+        String name = "replay-row-" + row.number() + ".png";
+        Path png = options.outputFile("--png", Path.of(name));
+        Optional<Path> gif = options.outputFile("--gif");
+        RowReplay.Drawn drawn;
+        try {
+            drawn = RowReplay.of(folder, row, c.map(), PIXELS_PER_METRE, FRAME_TICKS).orElseThrow();
+        } catch (IllegalArgumentException e) {
+            err.println("sitcov: replay: " + e.getMessage() + ".");
+            return ExitCode.FAILURE;
+        } catch (IOException e) {
+            throw new UsageException("replay: cannot read the recordings of row " + row.number() + " in " + folder + ": "
+                    + e.getMessage() + ".");
+        }
+        out.println("Row " + row.number() + " replays exactly as runs.csv recorded it, from its recorded commands (no"
+                + " controller ran).");
+        RunResult base = drawn.runs().reference().result();
+        String reference = OutcomeText.of(base.outcome(), base.ticks(), base.accidents());
+        if (row.variant().isPresent()) {
+            RunResult run = drawn.runs().variant().orElseThrow().result();
+            out.println("With " + (row.fault().isPresent() ? "fault " : "variant ") + row.variant().get().id() + " ("
+                    + row.variant().get().label() + "): " + OutcomeText.of(run.outcome(), run.ticks(), run.accidents())
+                    + ". Verdict: " + drawn.verdict().orElseThrow());
+            out.println((row.fault().isPresent() ? "Without the fault" : "The reference") + " (its twin, same map and"
+                    + " internal seed): " + reference);
+        } else {
+            out.println("The reference's run: " + reference);
+        }
+        try {
+            Files.createDirectories(png.toAbsolutePath().getParent());
+            new RunRenderer(PIXELS_PER_METRE).writePng(drawn.picture(), png);
+            if (gif.isPresent()) {
+                ReplayAnimation.write(c.map(), drawn.sides(), gif.get());
+            }
+        } catch (IOException e) {
+            err.println("sitcov: replay: could not write " + png + gif.map(g -> " or " + g).orElse("") + ": " + e.getMessage());
+            return ExitCode.FAILURE;
+        }
+        out.println("Replay drawn to " + png + (row.fault().isPresent() ? " (left without the fault, right with it)"
+                : row.variant().isPresent() ? " (left the reference, right the variant)" : ""));
         gif.ifPresent(g -> out.println("Animated in " + g));
         return ExitCode.OK;
     }
@@ -171,9 +231,15 @@ final class ReplayCommand implements Command {
                         options.value("--driver").orElseThrow(), options.count("--map", 0, Integer.MAX_VALUE).orElseThrow(),
                         oneFault(options, false).map(Fault::id));
             }
-            RecordedRows.refuseOtherController("replay", folder, row);
-            return new Case(ResultsRows.worldMap(folder, row.map()), row.map().internalSeed(), row.fault(),
-                    row.config().faultyRuns(), Optional.of(row));
+            WorldMap map = ResultsRows.worldMap(folder, row.map());
+            boolean recorded = FolderRecordings.has(folder, row);
+            // the builtin car is always at hand and draws the faulty run on to its end, past where the
+            // experiment stopped it; its recordings are checked all the same
+            if (!recorded || RecordedRows.ofTheBuiltinCar(row)) {
+                RecordedRows.refuseOtherController("replay", folder, row);
+            }
+            return new Case(map, row.map().internalSeed(), row.fault(), row.config().faultyRuns(), Optional.of(row),
+                    recorded ? Optional.of(folder) : Optional.empty(), recorded && !RecordedRows.ofTheBuiltinCar(row));
         } catch (IOException | IllegalArgumentException e) {
             throw new UsageException("replay: " + e.getMessage() + ".");
         }
@@ -187,7 +253,7 @@ final class ReplayCommand implements Command {
         }
         WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.loadRunnable("replay", load.get());
         return new Case(map, options.seed("--internal-seed").orElse(map.seed()), oneFault(options, true),
-                FaultyRuns.TO_END, Optional.empty());
+                FaultyRuns.TO_END, Optional.empty(), Optional.empty(), false);
     }
 
     private static Optional<Fault> oneFault(Options options, boolean required) throws UsageException {

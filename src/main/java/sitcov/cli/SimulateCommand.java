@@ -29,6 +29,8 @@ import sitcov.protocol.BatchingProxy;
 import sitcov.protocol.ControllerChoice;
 import sitcov.protocol.ControllerStartException;
 import sitcov.protocol.ExecControllers;
+import sitcov.recording.Recording;
+import sitcov.recording.RecordingFile;
 import sitcov.render.NearMissText;
 import sitcov.render.NearMissWatch;
 import sitcov.render.RunGallery;
@@ -62,7 +64,9 @@ final class SimulateCommand implements Command {
                 + " | --load FILE [--internal-seed I] [--faults SET] [--png FILE] [--trace FILE.csv]"
                 + " | --maps N [--seed S0 (default: 1)] [--summary] [--gallery DIR] [--batch B (exec: only)];"
                 + " any of them with [--controller builtin|exec:COMMAND] [--tick-timeout MS (default: "
-                + ExecControllers.DEFAULT_TICK_TIMEOUT_MILLIS + ")] [--controller-log FILE]";
+                + ExecControllers.DEFAULT_TICK_TIMEOUT_MILLIS + ")] [--controller-log FILE];"
+                + " or one run driven by recorded commands: (--seed S | --load FILE) --commands RECORDING.jsonl.gz"
+                + " [--png FILE] [--trace FILE.csv]";
     }
 
     @Override
@@ -77,9 +81,12 @@ final class SimulateCommand implements Command {
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args,
                 Set.of("--seed", "--internal-seed", "--load", "--png", "--trace", "--maps", "--faults", "--gallery",
-                        "--controller", "--tick-timeout", "--controller-log", "--batch"),
+                        "--controller", "--tick-timeout", "--controller-log", "--batch", "--commands"),
                 Set.of("--summary"));
         options.noPositional();
+        if (options.has("--commands")) {
+            return simulate(options, null, recording(options), out, err);
+        }
         try (ControllerChoice.Workers controllers = controllers(options, err)) {
             Path log = options.outputFile("--controller-log").orElse(null);
             ControllerFactory factory = controllers.worker(log);
@@ -109,7 +116,25 @@ final class SimulateCommand implements Command {
             if (options.has("--maps")) {
                 return calibrate(options, factory, null, out, err);
             }
-            return simulate(options, factory, out, err);
+            return simulate(options, factory, null, out, err);
+        }
+    }
+
+    /** The recording --commands names, read and checked; refused with the options it cannot go with. */
+    private static Recording recording(Options options) throws UsageException {
+        for (String other : List.of("--controller", "--faults", "--maps", "--batch", "--tick-timeout", "--controller-log",
+                "--gallery", "--summary")) {
+            if (options.has(other)) {
+                throw new UsageException("simulate: --commands drives the car from a recording, with no controller and no"
+                        + " faults; drop " + other + ".");
+            }
+        }
+        Path file = options.inputFile("--commands").orElseThrow();
+        try {
+            return RecordingFile.read(file);
+        } catch (IOException | IllegalArgumentException e) {
+            throw new UsageException("simulate: --commands " + file + ": " + e.getMessage()
+                    + "; name a recording as sitcov wrote it (a results folder's recordings/*.jsonl.gz).");
         }
     }
 
@@ -137,8 +162,9 @@ final class SimulateCommand implements Command {
         return workers;
     }
 
-    private int simulate(Options options, ControllerFactory controller, PrintStream out, PrintStream err)
-            throws UsageException {
+    /** One run, of {@code controller}, or driven by {@code recorded}'s commands when it is not null. */
+    private int simulate(Options options, ControllerFactory controller, Recording recorded, PrintStream out,
+                         PrintStream err) throws UsageException {
         if (options.has("--summary") || options.has("--gallery")) {
             throw new UsageException("simulate: " + (options.has("--summary") ? "--summary" : "--gallery")
                     + " goes with --maps N; one run prints one line anyway (draw it with --png).");
@@ -155,13 +181,19 @@ final class SimulateCommand implements Command {
         Optional<Path> trace = options.outputFile("--trace");
 
         WorldMap map = seed.isPresent() ? MapGenerator.generate(seed.get()) : Situations.loadRunnable(name(), load.get());
-        long internalSeed = internal.orElse(map.seed());
+        long internalSeed = internal.orElse(recorded != null ? recorded.internalSeed() : map.seed());
+        if (recorded != null && (recorded.externalSeed() != map.seed() || recorded.internalSeed() != internalSeed)) {
+            throw new UsageException("simulate: the recording " + options.value("--commands").orElseThrow() + " is of map "
+                    + recorded.externalSeed() + " with internal seed " + recorded.internalSeed() + ", not of map "
+                    + map.seed() + " with internal seed " + internalSeed + "; give its map (--seed "
+                    + recorded.externalSeed() + ", or its situation file) and leave out --internal-seed.");
+        }
         TrajectoryRecorder recorder = png.isPresent() ? new TrajectoryRecorder() : null;
         NearMissWatch nearMisses = new NearMissWatch();
         RunResult result;
         List<Activation> activations;
         // the builtin car's traces keep the columns they always had
-        boolean builtin = options.value("--controller").orElse("builtin").equals("builtin");
+        boolean builtin = recorded == null && options.value("--controller").orElse("builtin").equals("builtin");
         String[] firstClamp = new String[1];
         try (TraceWriter writer = trace.isPresent() ? new TraceWriter(trace.get(), map.seed(), internalSeed, !builtin) : null) {
             // why the controller failed, if it did: the outcome alone does not say
@@ -181,7 +213,9 @@ final class SimulateCommand implements Command {
                     writer.afterTick(tick, scene, detector);
                 }
             };
-            RunRecord record = Simulator.run(map, internalSeed, faults, observer, controller);
+            RunRecord record = recorded != null
+                    ? Simulator.replay(map, internalSeed, recorded.commands(), recorded.stopAfter(), observer)
+                    : Simulator.run(map, internalSeed, faults, observer, controller);
             result = record.result();
             activations = record.activations();
             if (failure[0] != null) {
@@ -194,6 +228,12 @@ final class SimulateCommand implements Command {
             return ExitCode.FAILURE;
         }
         out.println(resultLine(result));
+        if (recorded != null && (result.outcome() != recorded.outcome() || result.ticks() != recorded.ticks())) {
+            err.println("sitcov: simulate: the recording " + options.value("--commands").orElseThrow() + " ended in "
+                    + recorded.outcome() + " after " + recorded.ticks() + " ticks, its replay in " + result.outcome()
+                    + " after " + result.ticks() + ": the map or the world changed since it was recorded.");
+            return ExitCode.FAILURE;
+        }
         if (result.clampedTicks() > 0) {
             out.println("  clamped: the world clamped the command of " + result.clampedTicks() + " tick"
                     + (result.clampedTicks() == 1 ? "" : "s") + " to the car's limits, the first at " + firstClamp[0]);
@@ -234,7 +274,11 @@ final class SimulateCommand implements Command {
         int maps = options.count("--maps", 1, MAX_MAPS).orElseThrow();
         long first = options.firstSeed("--seed", maps);
         boolean perRun = !options.has("--summary");
-        Calibration calibration = new Calibration(first, maps, !perRun, options.value("--controller").orElse("builtin"));
+        java.util.OptionalInt timeout = options.has("--tick-timeout")
+                ? java.util.OptionalInt.of(options.count("--tick-timeout", 1, Integer.MAX_VALUE).orElseThrow())
+                : java.util.OptionalInt.empty();
+        Calibration calibration = new Calibration(first, maps, !perRun, Calibration.controllerArgs(
+                options.value("--controller").orElse("builtin"), timeout));
         RunGallery gallery = null;
         if (options.value("--gallery").isPresent()) {
             Path folder = Path.of(options.value("--gallery").get());

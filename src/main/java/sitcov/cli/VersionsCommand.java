@@ -90,6 +90,11 @@ final class VersionsCommand implements Command {
         } catch (IllegalArgumentException e) {
             throw new UsageException("versions: variants: " + e.getMessage() + ".");
         }
+        if (list.isEmpty()) {
+            // 'none' or only separators: a comparison with nothing to compare is not one
+            throw new UsageException("versions: --variants '" + variants + "' names no variant; name at least one,"
+                    + " e.g. --variants 'builtin:16', separated by ';'.");
+        }
         for (Variant v : list) {
             if (v instanceof Variant.Controller c) {
                 Controllers.check(c.spec());

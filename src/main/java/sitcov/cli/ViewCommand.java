@@ -12,7 +12,11 @@ import sitcov.builtin.BuiltinCar;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSet;
 import sitcov.judge.LiveRun;
+import sitcov.recording.FolderRecordings;
+import sitcov.recording.Recording;
+import sitcov.recording.RecordingFile;
 import sitcov.render.MapRenderer;
+import sitcov.results.ResultsRows;
 import sitcov.viewer.RunPainter;
 import sitcov.viewer.ViewerWindow;
 import sitcov.world.MapGenerator;
@@ -27,7 +31,8 @@ final class ViewCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "--seed S [--internal-seed I (default: S)] [--faults SET] | --load FILE [--internal-seed I] [--faults SET]";
+        return "--seed S [--internal-seed I (default: S)] [--faults SET] | --load FILE [--internal-seed I] [--faults SET]"
+                + " | DIR --row N (a recorded row, replayed from its recordings)";
     }
 
     @Override
@@ -37,8 +42,11 @@ final class ViewCommand implements Command {
 
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
-        Options options = Options.parse(name(), args, Set.of("--seed", "--internal-seed", "--load", "--faults"), Set.of());
-        options.noPositional();
+        Options options = Options.parse(name(), args, Set.of("--seed", "--internal-seed", "--load", "--faults", "--row"),
+                Set.of());
+        if (!options.positional().isEmpty() || options.has("--row")) {
+            return viewRow(options, out);
+        }
         Optional<Long> seed = options.seed("--seed");
         Optional<Path> load = options.inputFile("--load");
         if (seed.isPresent() == load.isPresent()) {
@@ -65,6 +73,55 @@ final class ViewCommand implements Command {
             return painters;
         }).show());
         out.println("view: a window shows map " + map.seed() + " (internal seed " + internal + "); close it to end.");
+        return ExitCode.OK;
+    }
+
+    /** {@code view DIR --row N}: the row's runs, each driven by its recorded commands, whatever controller made them. */
+    private static int viewRow(Options options, PrintStream out) throws UsageException {
+        if (options.positional().size() != 1 || !options.has("--row") || options.has("--seed") || options.has("--load")
+                || options.has("--internal-seed") || options.has("--faults")) {
+            throw new UsageException("view: name one results folder and a row of it: view DIR --row N.");
+        }
+        Path folder = Path.of(options.positional().get(0));
+        ResultsRows.Row row;
+        WorldMap map;
+        Recording reference;
+        Optional<Recording> variant;
+        try {
+            row = ResultsRows.row(folder, options.count("--row", 1, Integer.MAX_VALUE).orElseThrow());
+            map = ResultsRows.worldMap(folder, row.map());
+            if (!FolderRecordings.has(folder, row)) {
+                throw new UsageException("view: row " + row.number() + " of " + folder + " has no recording (only runs that"
+                        + " failed or found something are recorded, unless the experiment ran with --record all); watch"
+                        + " its map with 'view --seed " + row.map().externalSeed() + " --internal-seed "
+                        + row.map().internalSeed() + "'.");
+            }
+            // replayed once, checked against runs.csv, before the window opens
+            FolderRecordings.replay(folder, row, map, sitcov.judge.RunObserver.NONE, sitcov.judge.RunObserver.NONE);
+            reference = RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, true)));
+            variant = row.variant().isEmpty() ? Optional.empty()
+                    : Optional.of(RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, false))));
+        } catch (java.io.IOException | IllegalArgumentException e) {
+            throw new UsageException("view: " + e.getMessage() + ".");
+        }
+        if (GraphicsEnvironment.isHeadless()) {
+            throw new UsageException("view: there is no display here; run it on a desktop, or under a virtual one"
+                    + " (xvfb-run sitcov view ...), or draw the row with 'replay " + folder + " --row " + row.number()
+                    + " --gif FILE'.");
+        }
+        int scale = ViewerWindow.scaleFor(ViewerWindow.usableScreen().getSize(), variant.isEmpty() ? 1 : 2,
+                MapRenderer.DEFAULT_SCALE);
+        SwingUtilities.invokeLater(() -> new ViewerWindow(() -> {
+            List<RunPainter> painters = new ArrayList<>();
+            painters.add(new RunPainter(LiveRun.replaying(map, reference.internalSeed(), reference.commands(),
+                    reference.stopAfter()), "the reference, replayed", scale));
+            variant.ifPresent(v -> painters.add(new RunPainter(LiveRun.replaying(map, v.internalSeed(), v.commands(),
+                    v.stopAfter()), "variant " + row.variant().get().id() + " (" + row.variant().get().label()
+                    + "), replayed", scale)));
+            return painters;
+        }).show());
+        out.println("view: a window shows row " + row.number() + " of " + folder + ", replayed from its recordings; close"
+                + " it to end.");
         return ExitCode.OK;
     }
 }

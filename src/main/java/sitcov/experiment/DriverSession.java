@@ -158,7 +158,7 @@ public final class DriverSession {
         budget.charged(ticks);
         budget.judged(run);
         host.emit(new ExperimentEvent.MapJudged(run, built, j.replayed(), j.mapNanos(), j.driverNanos(), driverIndex,
-                progress()));
+                progress(), j.recordings()));
         return run;
     }
 

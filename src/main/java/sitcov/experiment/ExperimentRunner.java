@@ -30,6 +30,7 @@ public final class ExperimentRunner {
     private final List<Variant> variants;
     private final ControllerSource controllers;
     private final java.util.Map<Integer, ControllerSource> variantControllers;
+    private volatile boolean recordAll;
     private volatile boolean halted;
 
     /** A runner whose worker threads take the reference's controllers from {@code controllers} (which the caller closes). */
@@ -64,6 +65,16 @@ public final class ExperimentRunner {
     /** Where each worker thread gets its controller. */
     ControllerSource controllers() {
         return controllers;
+    }
+
+    /** Records every run, passing ones too ({@code --record all}), not only the failures and findings. */
+    public ExperimentRunner recordingAll(boolean all) {
+        this.recordAll = all;
+        return this;
+    }
+
+    boolean recordsAll() {
+        return recordAll;
     }
 
     /** The replications this run does: the plan's, or the shard's share of it. */

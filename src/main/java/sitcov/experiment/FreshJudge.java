@@ -1,11 +1,14 @@
 package sitcov.experiment;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import sitcov.judge.FaultOutcome;
 import sitcov.judge.JudgedMap;
 import sitcov.judge.MapRunner;
 import sitcov.judge.RunSummary;
+import sitcov.vehicles.CommandLog;
 import sitcov.world.WorldMap;
 
 /**
@@ -34,9 +37,11 @@ final class FreshJudge implements SessionJudge {
         SharedMaps.Judged judgedBefore = shared.judged(r.id());
         WorldMap world;
         JudgedMap judged;
+        Map<Integer, CommandLog> recordings = null;
         if (judgedBefore != null) {
             world = judgedBefore.world();
             judged = judgedBefore.judged();
+            recordings = judgedBefore.recordings();
         } else {
             world = r.map().get();
             judged = MapRunner.judgeVariants(world, internal, host.variants(), host.config().faultyRuns(),
@@ -48,14 +53,29 @@ final class FreshJudge implements SessionJudge {
         }
         MapRun run = new MapRun(replication, driver, r.index(), r.candidate(), r.id(), world.seed(), internal, r.cell(),
                 values, RunSummary.of(judged.faultFree()), judged.verdicts().stream().map(FaultOutcome::of).toList());
+        if (recordings == null) {
+            recordings = recordings(run, judged);
+        }
         long nanos = clock.now() - start;
         if (judgedBefore != null) {
             clock.judged(judgedBefore.nanos(), judgedBefore.nanos() - nanos);
             nanos = judgedBefore.nanos();
         } else {
-            shared.keep(r.id(), new SharedMaps.Judged(world, judged, nanos));
+            shared.keep(r.id(), new SharedMaps.Judged(world, judged.withoutCommands(), nanos, recordings));
             clock.judged(nanos, 0);
         }
-        return new Judgement(run, false, nanos, clock.elapsed());
+        return new Judgement(run, false, nanos, clock.elapsed(), recordings);
+    }
+
+    /** The commands of the map's runs a folder records: its failures and findings, or every run when asked. */
+    private Map<Integer, CommandLog> recordings(MapRun run, JudgedMap judged) {
+        boolean[] kept = run.recorded();
+        Map<Integer, CommandLog> recordings = new HashMap<>();
+        for (int i = 0; i < kept.length; i++) {
+            if (kept[i] || host.recordsAll()) {
+                recordings.put(i, judged.commands().get(i));
+            }
+        }
+        return recordings;
     }
 }

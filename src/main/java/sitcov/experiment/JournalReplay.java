@@ -41,6 +41,6 @@ final class JournalReplay implements SessionJudge {
                     + ") in the journal but " + r.id().text() + " (candidate " + r.candidate() + ") now");
         }
         clock.replayed(e.driverNanos(), index == entries.size() - 1);
-        return new Judgement(run, true, e.mapNanos(), e.driverNanos());
+        return new Judgement(run, true, e.mapNanos(), e.driverNanos(), java.util.Map.of());
     }
 }

@@ -13,8 +13,12 @@ sealed interface SessionJudge permits FreshJudge, JournalReplay {
     record Request(int index, MapId id, int candidate, double[] criteria, int cell, Supplier<WorldMap> map) {
     }
 
-    /** A judged map, whether it came from the journal, the wall time charged for it and the driver's time after it. */
-    record Judgement(MapRun run, boolean replayed, long mapNanos, long driverNanos) {
+    /**
+     * A judged map, whether it came from the journal, the wall time charged for it and the driver's time
+     * after it, and the commands of its runs to record, by run (none when it came from the journal).
+     */
+    record Judgement(MapRun run, boolean replayed, long mapNanos, long driverNanos,
+                     java.util.Map<Integer, sitcov.vehicles.CommandLog> recordings) {
     }
 
     Judgement judge(Request request);

@@ -22,8 +22,11 @@ final class SharedMaps {
         this.replication = replication;
     }
 
-    /** A map one driver of the replication judged, kept for the others, with the wall time it took. */
-    record Judged(WorldMap world, JudgedMap judged, long nanos) {
+    /**
+     * A map one driver of the replication judged, kept for the others, with the wall time it took and
+     * the commands of its runs to record (the rest are let go of: a replication keeps every map it judged).
+     */
+    record Judged(WorldMap world, JudgedMap judged, long nanos, Map<Integer, sitcov.vehicles.CommandLog> recordings) {
     }
 
     /** The map judged under {@code id} in this replication, or null. */

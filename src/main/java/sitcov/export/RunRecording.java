@@ -10,6 +10,7 @@ import sitcov.judge.RunObserver;
 import sitcov.judge.Simulator;
 import sitcov.oracle.AccidentDetector;
 import sitcov.oracle.RunResult;
+import sitcov.vehicles.CommandLog;
 import sitcov.vehicles.Telemetry;
 import sitcov.world.Dimensions;
 import sitcov.world.StartPose;
@@ -76,7 +77,23 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
     /** Runs {@code controller}'s car with {@code faults} on {@code map} to its end, recording every vehicle. */
     public static RunRecording of(WorldMap map, long internalSeed, Set<Fault> faults, ControllerFactory controller) {
         Recorder recorder = new Recorder(map);
-        RunResult result = Simulator.run(map, internalSeed, faults, recorder, controller).result();
+        return of(map, internalSeed, faults, Simulator.run(map, internalSeed, faults, recorder, controller).result(),
+                recorder);
+    }
+
+    /**
+     * A run replayed from the commands it carried out ({@code commands}), whatever controller made them,
+     * stopped after {@code stopAfter} ticks where the experiment stopped it ({@link Simulator#replay});
+     * {@code faults} are the seeded faults its controller had on, named in the export.
+     */
+    public static RunRecording replayed(WorldMap map, long internalSeed, CommandLog commands, long stopAfter,
+                                        Set<Fault> faults) {
+        Recorder recorder = new Recorder(map);
+        return of(map, internalSeed, faults, Simulator.replay(map, internalSeed, commands, stopAfter, recorder).result(),
+                recorder);
+    }
+
+    private static RunRecording of(WorldMap map, long internalSeed, Set<Fault> faults, RunResult result, Recorder recorder) {
         List<Track> tracks = new ArrayList<>();
         for (int i = 0; i < recorder.samples.size(); i++) {
             tracks.add(new Track(i == 0 ? EGO : movingName(i - 1), recorder.ids[i], recorder.samples.get(i)));

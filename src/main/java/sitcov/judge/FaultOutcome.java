@@ -15,6 +15,13 @@ public record FaultOutcome(Variant variant, RunSummary run, boolean reached, boo
                 v.firstEffectiveTick(), v.detection(), v.newFailure(), v.foundByPaperNotion());
     }
 
+    /** Whether {@code replayed}, judged again, is this outcome as recorded ({@link RunSummary#agrees}). */
+    public boolean agrees(FaultOutcome replayed) {
+        return run.agrees(replayed.run) && equals(new FaultOutcome(replayed.variant, run, replayed.reached,
+                replayed.effective, replayed.firstEffectiveTick, replayed.detection, replayed.newAccident,
+                replayed.paperFound));
+    }
+
     /**
      * Found under the differential oracle, or under the paper's notion: the variant was triggered
      * (reached) and the run failed (§5.2). Folders written before the notion required

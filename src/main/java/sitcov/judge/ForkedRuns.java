@@ -10,6 +10,7 @@ import sitcov.faults.Activation;
 import sitcov.faults.Fault;
 import sitcov.faults.Shadow;
 import sitcov.oracle.RunResult;
+import sitcov.vehicles.CommandLog;
 import sitcov.world.WorldMap;
 
 /**
@@ -31,16 +32,20 @@ final class ForkedRuns {
     static Judging judge(WorldMap map, long internalSeed, List<Fault> faults, FaultyRuns length,
                          ControllerFactory controller) {
         LiveRun watching = LiveRun.watching(map, internalSeed, EnumSet.copyOf(faults), controller);
-        RunResult faultFree = Simulator.drive(watching, RunObserver.NONE, null).result();
+        RunRecord reference = Simulator.drive(watching, RunObserver.NONE, null);
+        RunResult faultFree = reference.result();
         long stepped = faultFree.ticks();
         FaultVerdict[] verdicts = new FaultVerdict[faults.size()];
+        CommandLog[] commands = new CommandLog[1 + faults.size()];
+        commands[0] = reference.commands();
         List<Integer> departing = new ArrayList<>();
         for (int i = 0; i < faults.size(); i++) {
             Shadow shadow = watching.shadow(faults.get(i));
             if (shadow.departs()) {
                 departing.add(i);
             } else {
-                verdicts[i] = DifferentialOracle.judge(faultFree, unchanged(faultFree, shadow), shadow.fault());
+                verdicts[i] = DifferentialOracle.judge(faultFree, unchanged(reference, shadow), shadow.fault());
+                commands[1 + i] = reference.commands();
             }
         }
         departing.sort(Comparator.comparingLong(i -> watching.shadow(faults.get(i)).departureTick()));
@@ -53,18 +58,19 @@ final class ForkedRuns {
             RunRecord run = Simulator.drive(faulty, RunObserver.NONE, watch);
             stepped += run.result().ticks() - departs;
             verdicts[i] = DifferentialOracle.judge(faultFree, run, shadow.fault());
+            commands[1 + i] = run.commands();
         }
         stepped += feeder.ticks();
-        return new Judging(new JudgedMap(faultFree, List.of(verdicts)), stepped);
+        return new Judging(new JudgedMap(faultFree, List.of(verdicts), List.of(commands)), stepped);
     }
 
     /** The record of a faulty run that never departed from the fault-free run: that run, and what the fault did in it. */
-    private static RunRecord unchanged(RunResult faultFree, Shadow shadow) {
+    private static RunRecord unchanged(RunRecord faultFree, Shadow shadow) {
         List<Activation> activations = new ArrayList<>(Fault.values().length);
         for (Fault f : Fault.values()) {
             activations.add(f == shadow.fault() ? shadow.activation() : new Activation(f, false, false, 0, -1));
         }
-        return new RunRecord(faultFree, Set.of(shadow.fault()), activations);
+        return new RunRecord(faultFree.result(), Set.of(shadow.fault()), activations, faultFree.commands());
     }
 
     /** The fault-free run the checkpoints come from, made when first asked for and stepped on to each departure in turn. */

@@ -45,6 +45,8 @@ public final class LiveRun {
     private NearMisses nearMisses;
     private boolean copyable;
     private boolean ended;
+    /** A replay of a run the experiment stopped at its verdict stops after as many ticks; else never. */
+    private long stopAfter = Long.MAX_VALUE;
 
     /**
      * A run of the controller {@code controller} makes, with {@code faults} switched on: a controller
@@ -86,6 +88,16 @@ public final class LiveRun {
             throw new IllegalStateException("a run of this controller cannot be copied: its state is not the run's");
         }
         return ModelCopy.of(this, SHARED);
+    }
+
+    /**
+     * A recorded run again, for a viewer that steps it: the car driven by {@code commands} instead of a
+     * controller, stopped after {@code stopAfter} ticks as the experiment stopped it ({@link Simulator#replay}).
+     */
+    public static LiveRun replaying(WorldMap map, long internalSeed, sitcov.vehicles.CommandLog commands, long stopAfter) {
+        LiveRun run = new LiveRun(map, internalSeed, Set.of(), sitcov.vehicles.CommandPlayer.factory(commands));
+        run.stopAfter = stopAfter;
+        return run;
     }
 
     /** Keeps of each fault only whether and when it first acted, as a judged faulty run needs ({@link FaultSwitchboard#recordFirstEffectsOnly}). */
@@ -159,6 +171,9 @@ public final class LiveRun {
         if (goesOn) {
             // watched as a RunObserver watches, so the tick that ends the run is watched too
             nearMisses.afterTick(scene.telemetry());
+            if (state.tick() + 1 >= stopAfter) {
+                detector.stopAtVerdict(state);
+            }
         }
         if (!goesOn && !ended) {
             ended = true;
@@ -220,6 +235,6 @@ public final class LiveRun {
                 detector.excusedContacts(), detector.ticks(), Margins.of(nearMisses),
                 scene.telemetry().failure() == null ? "" : java.util.Objects.toString(scene.telemetry().failure().getMessage(), ""),
                 scene.telemetry().clampedTicks());
-        return new RunRecord(result, faults, switchboard.activations());
+        return new RunRecord(result, faults, switchboard.activations(), scene.autonomousCar().commandLog());
     }
 }

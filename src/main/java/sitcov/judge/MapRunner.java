@@ -11,6 +11,7 @@ import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
 import sitcov.seam.SeamFault;
+import sitcov.vehicles.CommandLog;
 import sitcov.world.WorldMap;
 
 /**
@@ -31,15 +32,19 @@ public final class MapRunner {
         if (forks(faults, controller)) {
             return ForkedRuns.judge(map, internalSeed, faults, length, controller).judged();
         }
-        RunResult faultFree = Simulator.run(map, internalSeed, Set.of(), RunObserver.NONE, controller).result();
+        RunRecord reference = Simulator.run(map, internalSeed, Set.of(), RunObserver.NONE, controller);
+        RunResult faultFree = reference.result();
         List<FaultVerdict> verdicts = new ArrayList<>(faults.size());
+        List<CommandLog> commands = new ArrayList<>(1 + faults.size());
+        commands.add(reference.commands());
         for (Fault fault : faults) {
             RunRecord faulty = length == FaultyRuns.UNTIL_VERDICT
                     ? Simulator.runUntilVerdict(map, internalSeed, EnumSet.of(fault), faultFree, controller)
                     : Simulator.runJudged(map, internalSeed, EnumSet.of(fault), controller);
             verdicts.add(DifferentialOracle.judge(faultFree, faulty, fault));
+            commands.add(faulty.commands());
         }
-        return new JudgedMap(faultFree, verdicts);
+        return new JudgedMap(faultFree, verdicts, commands);
     }
 
     /**
@@ -58,28 +63,36 @@ public final class MapRunner {
         CommandTrace trace = new CommandTrace();
         List<SeamFault> seams = Variant.seamsOf(variants);
         SeamRuns seamRuns = new SeamRuns(map, internalSeed, seams, length, reference);
-        RunResult base = seamRuns.reference(trace);
+        RunRecord baseRun = seamRuns.reference(trace);
+        RunResult base = baseRun.result();
         Map<SeamFault, Variant.Seam> seamVariants = new EnumMap<>(SeamFault.class);
         variants.stream().filter(v -> v instanceof Variant.Seam).map(v -> (Variant.Seam) v)
                 .forEach(v -> seamVariants.put(v.fault(), v));
-        Map<SeamFault, FaultVerdict> seamVerdicts = seams.isEmpty() ? Map.of() : seamRuns.verdicts(seamVariants);
+        Map<SeamFault, RunRecord> seamRecords = new EnumMap<>(SeamFault.class);
+        Map<SeamFault, FaultVerdict> seamVerdicts = seams.isEmpty() ? Map.of()
+                : seamRuns.verdicts(seamVariants, seamRecords);
         List<FaultVerdict> verdicts = new ArrayList<>(variants.size());
+        List<CommandLog> commands = new ArrayList<>(1 + variants.size());
+        commands.add(baseRun.commands());
         for (Variant v : variants) {
             VerdictWatch watch = length == FaultyRuns.UNTIL_VERDICT ? new VerdictWatch(base) : null;
             if (v instanceof Variant.Seeded s) {
                 RunRecord faulty = Simulator.drive(new LiveRun(map, internalSeed, EnumSet.of(s.fault()), reference)
                         .judged(), RunObserver.NONE, watch);
                 verdicts.add(DifferentialOracle.judge(base, faulty, s.fault()));
+                commands.add(faulty.commands());
             } else if (v instanceof Variant.Seam s) {
                 verdicts.add(seamVerdicts.get(s.fault()));
+                commands.add(seamRecords.get(s.fault()).commands());
             } else if (v instanceof Variant.Controller c) {
                 CommandTrace.Comparison differs = trace.comparison();
-                RunResult run = Simulator.drive(new LiveRun(map, internalSeed, Set.of(), controllers.apply(c)).judged(),
-                        differs, watch).result();
-                verdicts.add(DifferentialOracle.judge(base, run, c, true, differs.differing(), differs.first()));
+                RunRecord run = Simulator.drive(new LiveRun(map, internalSeed, Set.of(), controllers.apply(c)).judged(),
+                        differs, watch);
+                verdicts.add(DifferentialOracle.judge(base, run.result(), c, true, differs.differing(), differs.first()));
+                commands.add(run.commands());
             }
         }
-        return new JudgedMap(base, verdicts);
+        return new JudgedMap(base, verdicts, commands);
     }
 
     /**

@@ -44,6 +44,15 @@ public record RunSummary(Outcome outcome, long ticks, List<Long> accidents, Marg
                 r.failureReason(), r.clampedTicks());
     }
 
+    /**
+     * Whether {@code replayed}, a run of the same map and seeds run again, is this run as a results folder
+     * recorded it. Margins a folder did not measure (rows written before it kept them) are not compared.
+     */
+    public boolean agrees(RunSummary replayed) {
+        return equals(margins.known() ? replayed : new RunSummary(replayed.outcome, replayed.ticks, replayed.accidents,
+                Margins.UNKNOWN, replayed.failureReason, replayed.clampedTicks));
+    }
+
     public long count(AccidentType type) {
         return accidents.get(type.ordinal());
     }

@@ -29,6 +29,7 @@ final class SeamRuns {
     private final ControllerFactory reference;
     private final boolean forks;
     private SeamBoard watched;
+    private RunRecord baseRun;
     private RunResult base;
 
     SeamRuns(WorldMap map, long internalSeed, List<SeamFault> faults, FaultyRuns length, ControllerFactory reference) {
@@ -41,24 +42,28 @@ final class SeamRuns {
     }
 
     /** The reference run, watched by {@code observer}: it watches the seam faults from the shadows when they fork. */
-    RunResult reference(RunObserver observer) {
+    RunRecord reference(RunObserver observer) {
         if (!forks) {
-            base = Simulator.run(map, internalSeed, Set.of(), observer, reference).result();
-            return base;
+            baseRun = Simulator.run(map, internalSeed, Set.of(), observer, reference);
+        } else {
+            LiveRun watching = new LiveRun(map, internalSeed, Set.of(), SeamControllers.watching(faults, reference));
+            baseRun = Simulator.drive(watching, observer, null);
+            watched = SeamControllers.board(watching.scene().autonomousCar().controller());
         }
-        LiveRun watching = new LiveRun(map, internalSeed, Set.of(), SeamControllers.watching(faults, reference));
-        base = Simulator.drive(watching, observer, null).result();
-        watched = SeamControllers.board(watching.scene().autonomousCar().controller());
-        return base;
+        base = baseRun.result();
+        return baseRun;
     }
 
-    /** The verdict on every seam fault, each against the reference run {@link #reference} ran. */
-    Map<SeamFault, FaultVerdict> verdicts(Map<SeamFault, Variant.Seam> variants) {
+    /**
+     * The verdict on every seam fault, each against the reference run {@link #reference} ran; each
+     * faulty run's record goes into {@code runs} (the reference's, for a fault that never departs).
+     */
+    Map<SeamFault, FaultVerdict> verdicts(Map<SeamFault, Variant.Seam> variants, Map<SeamFault, RunRecord> runs) {
         Map<SeamFault, FaultVerdict> verdicts = new EnumMap<>(SeamFault.class);
         if (!forks) {
             for (SeamFault f : faults) {
                 LiveRun faulty = new LiveRun(map, internalSeed, Set.of(), SeamControllers.switchedOn(f, reference));
-                verdicts.put(f, judged(faulty, variants.get(f)));
+                verdicts.put(f, judged(faulty, variants.get(f), runs));
             }
             return verdicts;
         }
@@ -69,19 +74,22 @@ final class SeamRuns {
             Variant.Seam v = variants.get(shadow.fault());
             if (!shadow.departs()) {
                 verdicts.put(shadow.fault(), DifferentialOracle.judge(base, base, v, shadow.reached(), 0, -1));
+                runs.put(shadow.fault(), baseRun);
                 continue;
             }
             LiveRun fork = feeder.at(shadow.departureTick()).copy();
             SeamControllers.board(fork.scene().autonomousCar().controller())
                     .forkWith(shadow.fault(), shadow.reachedBefore(shadow.departureTick()));
-            verdicts.put(shadow.fault(), judged(fork, v));
+            verdicts.put(shadow.fault(), judged(fork, v, runs));
         }
         return verdicts;
     }
 
-    private FaultVerdict judged(LiveRun faulty, Variant.Seam v) {
+    private FaultVerdict judged(LiveRun faulty, Variant.Seam v, Map<SeamFault, RunRecord> runs) {
         VerdictWatch watch = length == FaultyRuns.UNTIL_VERDICT ? new VerdictWatch(base) : null;
-        RunResult run = Simulator.drive(faulty, RunObserver.NONE, watch).result();
+        RunRecord record = Simulator.drive(faulty, RunObserver.NONE, watch);
+        runs.put(v.fault(), record);
+        RunResult run = record.result();
         SeamActivation a = SeamControllers.board(faulty.scene().autonomousCar().controller()).activation(v.fault());
         return DifferentialOracle.judge(base, run, v, a.reached(), a.effectiveCount(), a.firstEffectiveTick());
     }

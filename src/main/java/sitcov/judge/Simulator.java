@@ -4,6 +4,8 @@ import java.util.Set;
 import sitcov.control.ControllerFactory;
 import sitcov.faults.Fault;
 import sitcov.oracle.RunResult;
+import sitcov.vehicles.CommandLog;
+import sitcov.vehicles.CommandPlayer;
 import sitcov.world.WorldMap;
 
 /**
@@ -35,6 +37,24 @@ public final class Simulator {
     private static RunRecord run(WorldMap map, long internalSeed, Set<Fault> faults, RunObserver observer,
                                  VerdictWatch watch, ControllerFactory controller) {
         return drive(new LiveRun(map, internalSeed, faults, controller), observer, watch);
+    }
+
+    /**
+     * A recorded run again: the car driven by the commands {@code commands} instead of a controller, on
+     * the map and internal seed it was recorded on, stopped after {@code stopAfter} ticks where the
+     * experiment stopped it at its verdict ({@code Long.MAX_VALUE}: run to its end). The world is
+     * deterministic given the commands, so this is the recorded run, tick for tick, if nothing changed.
+     */
+    public static RunRecord replay(WorldMap map, long internalSeed, CommandLog commands, long stopAfter,
+                                   RunObserver observer) {
+        LiveRun run = new LiveRun(map, internalSeed, Set.of(), CommandPlayer.factory(commands));
+        while (run.step()) {
+            observer.afterTick(run.tick(), run.telemetry(), run.detector());
+            if (run.tick() + 1 >= stopAfter) {
+                run.detector().stopAtVerdict(run.state());
+            }
+        }
+        return run.record();
     }
 
     /** Steps {@code run} to its end, or to its verdict against the run {@code watch} holds (when not null). */

@@ -32,28 +32,30 @@ public final class ReplayGallery {
         return folder.resolve(ResultsFolder.REPLAYS).resolve("fault-" + variant.id() + ".png");
     }
 
-    /** Draws the pictures of a folder of the builtin car; {@code builtin} makes its runs (a folder of another controller has none). */
+    /**
+     * Draws the pictures: in a folder of the builtin car, its runs made again by {@code builtin}; in a
+     * folder of any other controller, its runs replayed from their recordings (no controller runs).
+     */
     public static void write(Path folder, ExperimentConfig config, List<MapRun> inOrder, ControllerFactory builtin)
             throws IOException {
-        if (!config.controller().equals(ExperimentConfig.BUILTIN)) {
-            // the pictures run the builtin car; a folder that tested another controller shows none
-            return;
-        }
+        boolean builtinCar = config.controller().equals(ExperimentConfig.BUILTIN);
         List<Variant> faults = config.variants();
+        int perMap = 1 + faults.size();
         List<Runnable> pictures = new ArrayList<>();
         for (int f = 0; f < faults.size(); f++) {
-            for (MapRun run : inOrder) {
-                if (faults.get(f) instanceof Variant.Seeded seeded && run.faults().get(f).found(Notion.DIFFERENTIAL)) {
-                    Fault fault = seeded.fault();
-                    pictures.add(() -> {
-                        try {
-                            draw(folder, config, run, fault, builtin);
-                        } catch (IOException e) {
-                            throw new UncheckedIOException(e);
-                        }
-                    });
-                    break;
+            for (int m = 0; m < inOrder.size(); m++) {
+                MapRun run = inOrder.get(m);
+                if (!run.faults().get(f).found(Notion.DIFFERENTIAL)) {
+                    continue;
                 }
+                Variant variant = faults.get(f);
+                int row = m * perMap + f + 2;
+                if (builtinCar && variant instanceof Variant.Seeded seeded) {
+                    pictures.add(() -> unchecked(() -> draw(folder, config, run, seeded.fault(), builtin)));
+                } else {
+                    pictures.add(() -> unchecked(() -> drawRecorded(folder, variant, row)));
+                }
+                break;
             }
         }
         // each picture is its own file, judged and drawn alone: drawing them side by side changes no byte
@@ -62,6 +64,30 @@ public final class ReplayGallery {
         } catch (UncheckedIOException e) {
             throw e.getCause();
         }
+    }
+
+    private interface Drawing {
+        void draw() throws IOException;
+    }
+
+    private static void unchecked(Drawing d) {
+        try {
+            d.draw();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /** The picture of row {@code row}, its variant beside the reference, replayed from the folder's recordings. */
+    private static void drawRecorded(Path folder, Variant variant, int row) throws IOException {
+        ResultsRows.Row r = ResultsRows.row(folder, row);
+        var drawn = RowReplay.of(folder, r, ResultsRows.worldMap(folder, r.map()), PIXELS_PER_METRE, Integer.MAX_VALUE);
+        if (drawn.isEmpty()) {
+            return; // a folder written before recordings: its runs cannot be made again here
+        }
+        Path file = picture(folder, variant);
+        Files.createDirectories(file.getParent());
+        MapRenderer.writeAtomically(drawn.get().picture(), file);
     }
 
     private static void draw(Path folder, ExperimentConfig config, MapRun run, Fault fault, ControllerFactory builtin)

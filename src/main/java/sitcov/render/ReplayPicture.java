@@ -41,6 +41,25 @@ public final class ReplayPicture {
      */
     public BufferedImage render(WorldMap map, Side faultFree, Side faulty, Activation activation, String verdict,
                                 java.util.Optional<Accident> newAccident) {
+        return render(map, faultFree, faulty, new Titles("without the fault", String.format(Locale.ROOT,
+                "with fault %d (%s)", activation.fault().id(), activation.fault().label()),
+                "the same map and internal seed; the runs part where the fault first acts"),
+                java.util.Optional.of(activation), verdict, newAccident);
+    }
+
+    /** What the picture's title says: over each side, and under them both. */
+    public record Titles(String left, String right, String subtitle) {
+        /** The titles of a variant that is a controller of its own beside the reference. */
+        public static Titles ofVariant(sitcov.judge.Variant variant) {
+            return new Titles("the reference", "variant " + variant.id() + " (" + variant.label() + ")",
+                    "the same map and internal seed, each run replayed from its recorded commands");
+        }
+    }
+
+    /** Both runs under {@code titles}; the faulty side's ring where {@code activation} says the fault first acted. */
+    public BufferedImage render(WorldMap map, Side faultFree, Side faulty, Titles titles,
+                                java.util.Optional<Activation> activation, String verdict,
+                                java.util.Optional<Accident> newAccident) {
         RunRenderer renderer = new RunRenderer(scale);
         BufferedImage left = renderer.render(map, faultFree.trajectory(), faultFree.result());
         BufferedImage right = renderer.render(map, faulty.trajectory(), faulty.result(),
@@ -56,7 +75,7 @@ public final class ReplayPicture {
             g.fillRect(0, 0, image.getWidth(), image.getHeight());
             g.drawImage(left, 0, TITLE, null);
             g.drawImage(right, left.getWidth() + gap, TITLE, null);
-            title(g, left.getWidth(), gap, activation, verdict);
+            title(g, left.getWidth(), gap, titles, verdict);
         } finally {
             g.dispose();
         }
@@ -67,9 +86,11 @@ public final class ReplayPicture {
      * The faulty side's marks, drawn by {@link RunRenderer} so that their labels and the run's share
      * one placer: a ring where the fault first acted, and the first new accident singled out.
      */
-    static RunRenderer.Highlights highlights(Side faulty, Activation activation, java.util.Optional<Accident> newAccident) {
+    static RunRenderer.Highlights highlights(Side faulty, java.util.Optional<Activation> acted,
+                                             java.util.Optional<Accident> newAccident) {
         java.util.List<RunRenderer.Ring> rings = new java.util.ArrayList<>();
-        if (activation.effective()) {
+        if (acted.isPresent() && acted.get().effective()) {
+            Activation activation = acted.get();
             int i = faulty.trajectory().entryOf(activation.firstEffectiveTick());
             if (i >= 0) {
                 rings.add(new RunRenderer.Ring(faulty.trajectory().x(i), faulty.trajectory().y(i), EFFECT,
@@ -86,7 +107,8 @@ public final class ReplayPicture {
 
     /** The verdict in one line, saying where the experiment stopped the faulty run. */
     public static String verdictLine(sitcov.judge.FaultVerdict verdict, sitcov.judge.FaultyRuns length) {
-        return verdict.detection() + verdict.newAccident().map(a -> " by " + a.type() + " at tick " + a.tick()).orElse("")
+        return verdict.detection() + verdict.newAccident().map(a -> " by " + a.type() + " at tick " + a.tick())
+                .orElse(verdict.newFailure().map(f -> " by " + f + " at tick " + (verdict.faultyRun().ticks() - 1)).orElse(""))
                 + (length == sitcov.judge.FaultyRuns.UNTIL_VERDICT && verdict.newAccident()
                         .filter(a -> a.type() != sitcov.oracle.AccidentType.TIMEOUT).isPresent()
                         ? " (the experiment stopped this run there)" : ""); // a TIMEOUT is the run's own end
@@ -104,14 +126,13 @@ public final class ReplayPicture {
                 record.activations().get(fault.ordinal()), verdictLine(verdict, length), verdict.newAccident());
     }
 
-    private void title(Graphics2D g, int half, int gap, Activation activation, String verdict) {
+    private void title(Graphics2D g, int half, int gap, Titles titles, String verdict) {
         g.setColor(MapStyle.TEXT);
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 18));
-        g.drawString("without the fault", 12, 26);
-        g.drawString(String.format(Locale.ROOT, "with fault %d (%s)", activation.fault().id(), activation.fault().label()),
-                half + gap + 12, 26);
+        g.drawString(titles.left(), 12, 26);
+        g.drawString(titles.right(), half + gap + 12, 26);
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 14));
-        g.drawString("the same map and internal seed; the runs part where the fault first acts", 12, 50);
+        g.drawString(titles.subtitle(), 12, 50);
         g.drawString(verdict, half + gap + 12, 50);
     }
 }

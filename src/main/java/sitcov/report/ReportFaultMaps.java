@@ -11,6 +11,7 @@ import sitcov.experiment.MapRun;
 import sitcov.judge.Variant;
 import sitcov.judge.Notion;
 import sitcov.render.ReplayGallery;
+import sitcov.recording.Recording;
 import sitcov.results.ResultsFolder;
 
 /**
@@ -45,16 +46,28 @@ final class ReportFaultMaps {
                 + " --png run-row-" + row + ".png";
     }
 
+    /** Whether the folder keeps the recordings that replay the row of variant {@code variant} on {@code run}'s map. */
+    static boolean recorded(Path folder, MapRun run, int variant) {
+        Path dir = folder.resolve(ResultsFolder.RECORDINGS);
+        return Files.isRegularFile(dir.resolve(new Recording.RunKey(run.replication(), run.driver(), run.mapIndex(),
+                variant).fileName())) && Files.isRegularFile(dir.resolve(new Recording.RunKey(run.replication(),
+                run.driver(), run.mapIndex(), Recording.RunKey.REFERENCE).fileName()));
+    }
+
     static void append(StringBuilder h, Path folder, ExperimentConfig config, List<MapRun> inOrder, String version) {
         boolean builtin = config.controller().equals(ExperimentConfig.BUILTIN);
+        boolean replayed = !builtin && inOrder.stream().anyMatch(run -> recorded(folder, run, Recording.RunKey.REFERENCE));
         h.append("<h2>Maps that found each fault</h2><p class=\"muted\">Counts are of maps judged: every map each driver"
                 + " ran in each replication (runs.csv). Each command replays its row side by side, the run without the"
                 + " fault and the run with it, into a picture next to this page (add <code>--gif FILE</code> to watch"
                 + " them). Run it in a shell opened in this folder, once ").append(JAR).append(" names sitcov's jar: in"
                 + " the sitcov checkout, ").append(HtmlReport.command("mvn -q package -DskipTests && export " + JAR
-                + "=$PWD/target/sitcov-" + version + ".jar")).append(builtin ? "" : " This folder tested the controller "
-                + HtmlReport.esc(config.controller()) + ", not the builtin car that replay runs: each command runs the map"
-                + " with the fault through that controller into a picture instead.").append("</p>");
+                + "=$PWD/target/sitcov-" + version + ".jar")).append(builtin ? "" : replayed ? " This folder tested the"
+                + " controller " + HtmlReport.esc(config.controller()) + ": each command replays the row from the commands"
+                + " its runs carried out, kept in " + ResultsFolder.RECORDINGS + "/, so the controller need not be at hand."
+                : " This folder tested the controller " + HtmlReport.esc(config.controller()) + ", not the builtin car that"
+                + " replay runs: each command runs the map with the fault through that controller into a picture instead.")
+                .append("</p>");
         var faults = config.variants();
         int perMap = 1 + faults.size();
         for (int f = 0; f < faults.size(); f++) {
@@ -70,7 +83,7 @@ final class ReportFaultMaps {
                         found.add(String.format(Locale.ROOT, "<li>replication %d, %s, map %d (%s): %s, row %d of runs.csv"
                                 + "<br>%s</li>", run.replication(), HtmlReport.esc(run.driver()), run.mapIndex(),
                                 HtmlReport.esc(run.map().text()), outcome.newAccident().map(Enum::name).orElse("FOUND"), row,
-                                HtmlReport.command(builtin ? replay(row)
+                                HtmlReport.command(builtin || recorded(folder, run, faults.get(f).id()) ? replay(row)
                                         : rerun(row, run, faults.get(f), config.controller()))));
                     }
                 }

@@ -41,6 +41,7 @@ public final class ResultsRecorder implements ExperimentListener {
     /** Makes the replay pictures' runs when the folder is finished (the builtin car's; see {@link ResultsFinisher#finish}). */
     private final ControllerFactory builtin;
     private JournalWriter writer;
+    private final sitcov.recording.RecordingWriter recordings;
     private Summary summary;
 
     private ResultsRecorder(Path folder, FolderLock lock, Manifest manifest, Journal journal,
@@ -55,6 +56,7 @@ public final class ResultsRecorder implements ExperimentListener {
         this.nanoClock = nanoClock;
         this.start = nanoClock.getAsLong();
         this.writer = new JournalWriter(folder, manifest);
+        this.recordings = new sitcov.recording.RecordingWriter(folder, manifest.config().variants());
     }
 
     /**
@@ -135,6 +137,7 @@ public final class ResultsRecorder implements ExperimentListener {
     @Override
     public void on(ExperimentEvent event) {
         lock.verify();
+        recordings.on(event); // before the journal: a row on disk has its recording
         writer.on(event);
         if (event instanceof ExperimentEvent.Ended) {
             try {

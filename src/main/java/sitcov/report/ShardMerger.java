@@ -137,15 +137,21 @@ public final class ShardMerger {
     }
 
     private static void copySituations(Path shard, Path out) throws IOException {
-        Path from = shard.resolve(ResultsFolder.SITUATIONS);
+        copy(shard, out, ResultsFolder.SITUATIONS, ".situation");
+        // a shard's recordings are of its own replications: the union is the unsharded run's
+        copy(shard, out, ResultsFolder.RECORDINGS, sitcov.recording.RecordingFile.SUFFIX);
+    }
+
+    private static void copy(Path shard, Path out, String folder, String suffix) throws IOException {
+        Path from = shard.resolve(folder);
         if (!Files.isDirectory(from)) {
             return;
         }
-        Path to = out.resolve(ResultsFolder.SITUATIONS);
+        Path to = out.resolve(folder);
         Files.createDirectories(to);
         try (Stream<Path> files = Files.list(from)) {
-            // situation files only: not the temporary files a killed shard left
-            for (Path f : files.filter(f -> f.getFileName().toString().endsWith(".situation")
+            // its files only: not the temporary files a killed shard left
+            for (Path f : files.filter(f -> f.getFileName().toString().endsWith(suffix)
                     && !f.getFileName().toString().startsWith(".")).toList()) {
                 Files.copy(f, to.resolve(f.getFileName()), StandardCopyOption.REPLACE_EXISTING);
             }

@@ -161,9 +161,14 @@ public final class OutputFile implements AutoCloseable {
 
     /** Writes {@code text} as UTF-8 to {@code file}, whole or not at all. */
     public static void writeString(Path file, String text) throws IOException {
+        writeBytes(file, text.getBytes(StandardCharsets.UTF_8));
+    }
+
+    /** Writes {@code bytes} to {@code file}, whole or not at all. */
+    public static void writeBytes(Path file, byte[] bytes) throws IOException {
         try (OutputFile out = open(file)) {
             try {
-                out.stream().write(text.getBytes(StandardCharsets.UTF_8));
+                out.stream().write(bytes);
             } catch (IOException e) {
                 throw IoReason.about(file, e);
             }

@@ -29,6 +29,8 @@ public final class ResultsFolder {
     public static final String GRID = "grid.txt";
     /** Situation files of maps that drivers built (named in runs.csv as situation:NAME). */
     public static final String SITUATIONS = "situations";
+    /** The commands of every run the folder lists as a failure or a finding (RUN.jsonl.gz; sitcov.recording). */
+    public static final String RECORDINGS = "recordings";
     /** Replays of the maps that found each fault, one picture a fault (fault-ID.png). */
     public static final String REPLAYS = "replays";
     public static final String SUMMARY = "summary.csv";
@@ -79,12 +81,13 @@ public final class ResultsFolder {
 
     /**
      * The temporary files {@link OutputFile} names ({@code .NAME<digits>.tmp}) for the files sitcov
-     * writes: at the top, in situations/ and in replays/. A kill leaves them; nothing else matches.
+     * writes: at the top, in situations/, replays/ and recordings/. A kill leaves them; nothing else matches.
      */
     private static final Pattern TOP_TEMP = Pattern.compile("\\.(" + String.join("|", NAMES.stream().map(Pattern::quote)
             .toList()) + "|" + Pattern.quote(FOREST_PLOT) + "-\\d+-[A-Za-z0-9._-]+-vs-[A-Za-z0-9._-]+\\.png)\\d+\\.tmp");
     private static final Pattern SITUATION_TEMP = Pattern.compile("\\.[A-Za-z0-9][A-Za-z0-9._-]*\\.situation\\d+\\.tmp");
     private static final Pattern REPLAY_TEMP = Pattern.compile("\\.fault-\\d+\\.png\\d+\\.tmp");
+    private static final Pattern RECORDING_TEMP = Pattern.compile("\\.r\\d+-[A-Za-z0-9._-]+\\.jsonl\\.gz\\d+\\.tmp");
 
     private ResultsFolder() {
     }
@@ -98,6 +101,7 @@ public final class ResultsFolder {
         sweep(folder, TOP_TEMP);
         sweep(folder.resolve(SITUATIONS), SITUATION_TEMP);
         sweep(folder.resolve(REPLAYS), REPLAY_TEMP);
+        sweep(folder.resolve(RECORDINGS), RECORDING_TEMP);
     }
 
     private static void sweep(Path dir, Pattern temp) throws IOException {

@@ -48,6 +48,7 @@ public final class AutonomousCar implements Bodied, Steppable {
     private ControllerFailure failure;
     private Box keptClear;
     private Box keptClearOf;
+    private CommandLog log = new CommandLog();
 
     AutonomousCar(Scene scene, StartPose start, Controller controller) {
         this.scene = scene;
@@ -81,21 +82,45 @@ public final class AutonomousCar implements Bodied, Steppable {
             controller.step(observation, command);
         } catch (ControllerFailure failed) {
             failure = failed;
+            log.failed(failed.kind(), failed.getMessage());
             return;
         } catch (RuntimeException bug) {
             // a controller in process that throws has crashed, as a program that exits has: the run ends in its failure
             failure = new ControllerFailure(ControllerFailure.Kind.ERROR, "the controller threw " + bug);
+            log.failed(failure.kind(), failure.getMessage());
             return;
         }
         report.copyOf(command.report());
+        logRequests();
         String broken = brokenJunctionRule();
         if (broken != null) {
+            // logged as asked: played again, the same requests break the same rule
+            log.command(command.speed(), command.steering());
             failure = new ControllerFailure(ControllerFailure.Kind.ERROR, "the controller broke the world's rules: " + broken);
             return;
         }
         grantRightOfWay(state.tick());
         drive();
+        log.command(body.speed(), steering);
+        if (clamped) {
+            log.clamped(askedSpeed, askedSteering);
+        }
         reachedTarget = arrival.isReached(body.x(), body.y());
+    }
+
+    private void logRequests() {
+        log.report(report);
+        for (int i = 0; i < command.releaseCount(); i++) {
+            log.release(command.releaseAt(i));
+        }
+        for (int i = 0; i < command.claimCount(); i++) {
+            log.claim(command.claimAt(i));
+        }
+    }
+
+    /** The commands the world carried out so far in the run. */
+    public CommandLog commandLog() {
+        return log;
     }
 
     /** Hands the observation to a controller that answers later; false when it failed at once (the run then ends). */
@@ -108,6 +133,7 @@ public final class AutonomousCar implements Bodied, Steppable {
         } catch (RuntimeException bug) {
             failure = new ControllerFailure(ControllerFailure.Kind.ERROR, "the controller threw " + bug);
         }
+        log.failed(failure.kind(), failure.getMessage());
         return false;
     }
 

@@ -247,7 +247,8 @@ class ExportCommandTest {
         Path out = dir.resolve("out");
         CliRunner r = CliRunner.run("export", copy.toString(), "--found", "--out", out.toString());
         assertEquals(ExitCode.FAILURE, r.exitCode(), r.err());
-        assertTrue(r.err().contains("does not run again as recorded: the fault-free run was recorded as")
+        assertTrue(r.err().contains("does not replay from its recording ")
+                && r.err().contains("the reference's run was recorded in runs.csv as")
                 && r.err().contains("Nothing was written."), r.err());
         assertFalse(Files.exists(out), "not one file of the export, nor its folder");
     }

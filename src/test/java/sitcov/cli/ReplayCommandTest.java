@@ -148,4 +148,25 @@ class ReplayCommandTest {
     private static String line(String out, String start) {
         return out.lines().filter(l -> l.startsWith(start)).findFirst().orElse("");
     }
+
+    @Test
+    void aRecordingPutInAnotherRunsPlaceIsRefusedNamingIt(@TempDir Path dir) throws Exception {
+        Path copy = dir.resolve("swapped");
+        ResultsFolders.copy(ResultsFolders.tinyReference(), copy);
+        List<sitcov.results.ResultsRows.Row> recorded = new ArrayList<>();
+        for (sitcov.results.ResultsRows.Row row : sitcov.results.ResultsRows.all(copy)) {
+            if (row.variant().isPresent() && sitcov.recording.FolderRecordings.has(copy, row)) {
+                recorded.add(row);
+            }
+        }
+        assertTrue(recorded.size() >= 2, "the tiny run finds faults on more than one map: " + recorded.size());
+        Path mine = sitcov.recording.FolderRecordings.file(copy, sitcov.recording.FolderRecordings.key(recorded.get(0), false));
+        Path other = sitcov.recording.FolderRecordings.file(copy, sitcov.recording.FolderRecordings.key(recorded.get(1), false));
+        Files.copy(other, mine, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        CliRunner r = CliRunner.run("replay", copy.toString(), "--row", Integer.toString(recorded.get(0).number()), "--png",
+                dir.resolve("x.png").toString());
+        assertEquals(ExitCode.FAILURE, r.exitCode(), r.out());
+        assertTrue(r.err().contains(mine.toString()) && r.err().contains("is of another run"), r.err());
+        assertFalse(Files.exists(dir.resolve("x.png")), "nothing drawn");
+    }
 }

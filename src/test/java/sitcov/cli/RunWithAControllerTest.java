@@ -20,22 +20,33 @@ class RunWithAControllerTest {
     }
 
     @Test
-    void anExperimentOnAnotherControllerKeepsItInTheManifestDrawsNoBuiltinReplaysAndReplaySaysHowToRunIt(@TempDir Path dir)
+    void anExperimentOnAnotherControllerKeepsItInTheManifestAndReplaysItsFindingsFromTheirRecordings(@TempDir Path dir)
             throws Exception {
         Path out = dir.resolve("planted");
         CliRunner r = CliRunner.run("run", ResultsFolders.TINY, "--replications", "1", "--out", out.toString(),
                 "--controller", "builtin:16", "--threads", "1");
         assertEquals(ExitCode.OK, r.exitCode(), r.err());
         assertTrue(Files.readString(out.resolve("manifest.properties")).contains("controller=builtin:16\n"));
-        assertFalse(Files.exists(out.resolve("replays")) && Files.list(out.resolve("replays")).findAny().isPresent(),
-                "replay pictures run the builtin car, so a folder of another controller has none");
+        assertTrue(Files.list(out.resolve("recordings")).findAny().isPresent(), "the reference's failures are recorded");
         String report = Files.readString(out.resolve("report.html"));
-        assertTrue(report.contains("<span>simulate</span>") && report.contains("<span>&quot;builtin:16&quot;</span>")
-                && !report.contains("<span>replay</span>"), "the report's commands run the folder's controller");
-        CliRunner replay = CliRunner.run("replay", out.toString(), "--row", "1");
-        assertEquals(ExitCode.USAGE, replay.exitCode());
+        assertTrue(report.contains("<span>replay</span>") && !report.contains("<span>simulate</span>"),
+                "the report's commands replay the recorded rows");
+        // a row that passed is not recorded: replay names the command that runs its map with the folder's controller
+        int passing = passingRow(out);
+        CliRunner replay = CliRunner.run("replay", out.toString(), "--row", Integer.toString(passing));
+        assertEquals(ExitCode.USAGE, replay.exitCode(), replay.out());
         assertTrue(replay.err().contains("--controller \"builtin:16\"") && replay.err().contains("simulate --seed "),
                 replay.err());
+    }
+
+    /** The number of a row whose map has no recording: every run on it passed. */
+    private static int passingRow(Path out) throws Exception {
+        for (sitcov.results.ResultsRows.Row row : sitcov.results.ResultsRows.all(out)) {
+            if (!sitcov.recording.FolderRecordings.has(out, row)) {
+                return row.number();
+            }
+        }
+        throw new AssertionError("every row of " + out + " is recorded");
     }
 
     @Test

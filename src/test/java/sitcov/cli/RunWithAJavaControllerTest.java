@@ -124,10 +124,12 @@ class RunWithAJavaControllerTest {
                 + " CONTROLLER_ERROR)"), verdict);
         String manifest = Files.readString(out.resolve("manifest.properties"));
         assertTrue(manifest.contains("variants=java:test-crashes-at-20\n") && !manifest.contains("faults="), manifest);
-        // replay runs the builtin car: for the variant's row it names the command that runs the variant instead
-        CliRunner replay = CliRunner.run("replay", out.toString(), "--row", "2");
-        assertEquals(ExitCode.USAGE, replay.exitCode());
-        assertTrue(replay.err().contains("--controller \"java:test-crashes-at-20\""), replay.err());
+        // the variant's crash is recorded: replay shows it from its commands, the Java controller not run
+        CliRunner replay = CliRunner.run("replay", out.toString(), "--row", "2", "--png",
+                dir.resolve("row-2.png").toString());
+        assertEquals(ExitCode.OK, replay.exitCode(), replay.err());
+        assertTrue(replay.out().contains("replays exactly") && replay.out().contains("Verdict: FOUND by CONTROLLER_ERROR"),
+                replay.out());
     }
 
     @Test

@@ -1,6 +1,7 @@
 package sitcov.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -43,6 +44,16 @@ class VersionsCommandTest {
         assertEquals(ExitCode.USAGE, r.exitCode(), r.err());
         assertTrue(r.err().contains("failed the handshake"), r.err());
         assertTrue(!Files.exists(out), "nothing is written for a controller that cannot start");
+    }
+
+    @Test
+    void aComparisonWithNoVariantIsRefusedBeforeAnythingRuns(@TempDir Path dir) {
+        Path out = dir.resolve("never");
+        CliRunner r = CliRunner.run("versions", "--reference", "builtin", "--variants", "none", "--maps", "2", "--out",
+                out.toString());
+        assertEquals(ExitCode.USAGE, r.exitCode(), r.out());
+        assertTrue(r.err().contains("names no variant"), r.err());
+        assertFalse(java.nio.file.Files.exists(out), "nothing is written");
     }
 
     @Test

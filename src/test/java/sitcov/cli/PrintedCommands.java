@@ -76,7 +76,7 @@ final class PrintedCommands {
         return args;
     }
 
-    /** The words a POSIX shell makes of {@code line}: split at spaces, quotes kept together and removed, a backslash outside quotes escaping the next character. */
+    /** The words a POSIX shell makes of {@code line}: split at white space, quotes kept together and removed, a backslash outside quotes escaping the next character. */
     static List<String> shellWords(String line) {
         List<String> words = new ArrayList<>();
         StringBuilder word = new StringBuilder();
@@ -96,7 +96,7 @@ final class PrintedCommands {
             } else if (c == '\'' || c == '"') {
                 quote = c;
                 inWord = true;
-            } else if (c == ' ') {
+            } else if (Character.isWhitespace(c)) {
                 if (inWord) {
                     words.add(word.toString());
                     word.setLength(0);

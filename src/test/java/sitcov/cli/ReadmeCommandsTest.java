@@ -83,7 +83,7 @@ class ReadmeCommandsTest {
         if (!command.startsWith(LAUNCHER)) {
             return "neither one of the two commands nor " + LAUNCHER.strip() + ": the test cannot check it";
         }
-        List<String> args = cutDown(Tokens.split(command.substring(LAUNCHER.length())));
+        List<String> args = cutDown(PrintedCommands.shellWords(command.substring(LAUNCHER.length())));
         if (needsDisplay) {
             if (!GraphicsEnvironment.isHeadless()) {
                 return null; // it would open a window
@@ -139,43 +139,5 @@ class ReadmeCommandsTest {
             fail("a fenced block of the README is not closed");
         }
         return commands;
-    }
-
-    /** A command line split into words as a POSIX shell splits it, for the quotes the README uses. */
-    static final class Tokens {
-        private Tokens() {
-        }
-
-        static List<String> split(String line) {
-            List<String> words = new ArrayList<>();
-            StringBuilder word = new StringBuilder();
-            boolean inWord = false;
-            char quote = 0;
-            for (char c : line.toCharArray()) {
-                if (quote != 0) {
-                    if (c == quote) {
-                        quote = 0;
-                    } else {
-                        word.append(c);
-                    }
-                } else if (c == '"' || c == '\'') {
-                    quote = c;
-                    inWord = true;
-                } else if (Character.isWhitespace(c)) {
-                    if (inWord) {
-                        words.add(word.toString());
-                        word.setLength(0);
-                        inWord = false;
-                    }
-                } else {
-                    word.append(c);
-                    inWord = true;
-                }
-            }
-            if (inWord) {
-                words.add(word.toString());
-            }
-            return words;
-        }
     }
 }

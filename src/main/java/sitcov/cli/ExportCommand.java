@@ -82,7 +82,8 @@ final class ExportCommand implements Command {
                 OutputFile.writeString(folder.resolve(p.name()), p.text().get());
             }
         } catch (IOException e) {
-            err.println("sitcov: export: " + IoReason.of(e, folder) + "; files written before it are whole.");
+            err.println("sitcov: export: could not write into " + folder + ": " + IoReason.of(e, folder)
+                    + "; files written before it are whole.");
             return ExitCode.FAILURE;
         } catch (IllegalStateException e) {
             // a hand-made situation the formats cannot carry, such as two junction squares that touch
@@ -117,6 +118,16 @@ final class ExportCommand implements Command {
                 new UsageException("export: name the folder to write into with --out DIR.")));
         if (Files.exists(folder) && !Files.isDirectory(folder)) {
             throw new UsageException("export: --out " + folder + " is a file; name a folder (it is made if missing).");
+        }
+        // a folder under a file cannot be made: said before anything is written
+        for (Path above = folder.toAbsolutePath().getParent(); above != null; above = above.getParent()) {
+            if (Files.exists(above)) {
+                if (!Files.isDirectory(above)) {
+                    throw new UsageException("export: --out " + folder + " cannot be made: " + above + " is a file; name a"
+                            + " folder under a folder (nothing was written).");
+                }
+                break;
+            }
         }
         return folder;
     }

@@ -109,6 +109,17 @@ class ExportCommandTest {
     }
 
     @Test
+    void aFolderUnderAFileIsRefusedByNameBeforeAnythingIsWritten() throws Exception {
+        Path file = dir.resolve("a-file");
+        Files.writeString(file, "kept");
+        CliRunner r = CliRunner.run("export", "--seed", "5", "--out", file.resolve("x").toString());
+        assertEquals(ExitCode.USAGE, r.exitCode(), r.err());
+        assertTrue(r.err().contains(file.resolve("x") + " cannot be made: " + file.toAbsolutePath() + " is a file"), r.err());
+        assertEquals("kept", Files.readString(file));
+        assertEquals(List.of("a-file"), files(dir));
+    }
+
+    @Test
     void aSituationFileIsExportedUnderItsOwnNameAsItsSeedIs() throws Exception {
         Path situation = dir.resolve("five.situation");
         assertEquals(ExitCode.OK, CliRunner.run("map", "--seed", "5", "--save", situation.toString()).exitCode());

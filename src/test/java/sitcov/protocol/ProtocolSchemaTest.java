@@ -159,6 +159,29 @@ class ProtocolSchemaTest {
     }
 
     /** Commands sitcov refuses (with protocol 2, answering tick 7), each with what is wrong. */
+    @Test
+    void everySeamFaultsObservationKeepsTheSchema() throws IOException {
+        List<Case> cases = new ArrayList<>();
+        for (sitcov.seam.SeamFault fault : sitcov.seam.SeamFault.values()) {
+            List<String> lines = sitcovsMessages(EVERYTHING, List.of(2L),
+                    controllers -> sitcov.seam.SeamControllers.switchedOn(fault, controllers));
+            int observations = 0;
+            for (String line : lines) {
+                // every 25th observation of the run under the fault: the schema takes a while a line
+                if (line.startsWith("{\"type\":\"observation\"") && observations++ % 25 == 0) {
+                    cases.add(new Case("observation", line, fault.spec() + "'s observation"));
+                }
+            }
+            assertTrue(observations > 50, fault.spec() + ": the run is not trivially short (" + observations + ")");
+        }
+        List<String[]> verdicts = validate(cases);
+        for (int i = 0; i < cases.size(); i++) {
+            Case c = cases.get(i);
+            assertEquals("ok", verdicts.get(i)[0], c.what + " against #/$defs/" + c.def + ": " + c.line);
+            assertEquals("ok", verdicts.get(i)[1], c.what + " against the schema: " + c.line);
+        }
+    }
+
     private static final List<String[]> BAD_COMMANDS = List.of(
             bad("no speed_change and no speed", "{\"type\":\"command\",\"tick\":7,\"steering\":0}"),
             bad("speed_change null (NaN)", "{\"type\":\"command\",\"tick\":7,\"speed_change\":null,\"steering\":0}"),
@@ -327,13 +350,19 @@ class ProtocolSchemaTest {
 
     /** The lines sitcov writes to a controller that asks for what {@code wants} says, over two runs (the builtin car driving). */
     private static List<String> sitcovsMessages(Wire.Hello wants) {
+        return sitcovsMessages(wants, List.of(2L, 3L), controllers -> controllers);
+    }
+
+    /** The same over the maps {@code seeds}, the controller wrapped by {@code around} (a seam fault between it and the world). */
+    private static List<String> sitcovsMessages(Wire.Hello wants, List<Long> seeds,
+                                                java.util.function.UnaryOperator<sitcov.control.ControllerFactory> around) {
         List<String> lines = new ArrayList<>();
         JsonWriter w = new JsonWriter();
         Wire.sitcovHello(w, "test");
         lines.add(w.text().toString());
-        for (long seed : List.of(2L, 3L)) {
+        for (long seed : seeds) {
             Set<Fault> faults = seed == 2 ? Set.of() : EnumSet.of(Fault.ofId(8), Fault.ofId(16));
-            Simulator.run(MapGenerator.generate(seed), seed, Set.of(), RunObserver.NONE, run -> {
+            Simulator.run(MapGenerator.generate(seed), seed, Set.of(), RunObserver.NONE, around.apply(run -> {
                 ResetMessage.write(w, run, faults);
                 lines.add(w.text().toString());
                 Controller car = BuiltinCar.FACTORY.start(run);
@@ -351,7 +380,7 @@ class ProtocolSchemaTest {
                         lines.add(w.text().toString());
                     }
                 };
-            });
+            }));
         }
         return lines;
     }

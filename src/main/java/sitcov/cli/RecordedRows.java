@@ -69,16 +69,21 @@ final class RecordedRows {
         RunSummary recorded = row.map().faultFree();
         RunSummary replayed = RunSummary.of(judged.faultFree());
         if (!recorded.agrees(replayed)) {
-            return Optional.of("the fault-free run was recorded as " + words(recorded) + ", it now gives " + words(replayed));
+            return Optional.of("the fault-free run was recorded as " + unlike(words(recorded), words(replayed)));
         }
         if (row.outcome().isPresent()) {
             FaultOutcome was = row.outcome().get();
             FaultOutcome now = FaultOutcome.of(judged.verdicts().get(0));
             if (!was.agrees(now)) {
-                return Optional.of("fault " + was.variant().id() + " was recorded as " + words(was) + ", it now gives "
-                        + words(now));
+                return Optional.of("fault " + was.variant().id() + " was recorded as " + unlike(words(was), words(now)));
             }
         }
         return Optional.empty();
+    }
+
+    /** "X, it now gives Y"; where the words agree, what else differs: the margins they leave out. */
+    private static String unlike(String was, String now) {
+        return was + ", it now gives " + now + (was.equals(now) ? ", with other near misses or robustness (runs.csv's"
+                + " near_* and rho_* columns)" : "");
     }
 }

@@ -28,7 +28,7 @@ class ResumeCommandTest {
     Path dir;
 
     /** Starts the preset into {@code folder} as run does, and stops it as a kill would once {@code maps} maps were judged. */
-    private static ExperimentConfig interrupt(String preset, Path folder, int maps) throws Exception {
+    static ExperimentConfig interrupt(String preset, Path folder, int maps) throws Exception {
         ExperimentConfig config = Preset.read(Path.of(preset), null, Drivers.standard()).config();
         ResultsRecorder recorder = ResultsRecorder.create(folder, new Manifest(config, Version.current(), Shard.WHOLE,
                 false, false), Map.of(), System::nanoTime, BuiltinCar.FACTORY);

@@ -142,9 +142,9 @@ final class Calibration {
         return args + (tickTimeout.isPresent() ? " --tick-timeout " + tickTimeout.getAsInt() : "");
     }
 
-    /** {@code text} as one word of a POSIX shell: in single quotes, each of its own written '\''. */
+    /** {@code text} as one word of a POSIX shell, always quoted. */
     static String shellQuoted(String text) {
-        return "'" + text.replace("'", "'\\''") + "'";
+        return sitcov.results.ShellWord.quoted(text);
     }
 
     private void row(PrintStream out, String label, int count, String target) {

@@ -88,6 +88,9 @@ final class CampaignRun {
                 throw new UsageException("run: " + folder + " was written by sitcov " + manifest.version() + ", this is "
                         + Version.current() + "; resume it with that version, or start the preset afresh.");
             }
+            if (!manifest.checked()) {
+                err.println("sitcov: run: " + CampaignManifest.uncheckedWarning(folder) + ".");
+            }
             lock = FolderLock.claim(folder);
             // what a kill while the campaign's own files were written left
             ResultsFolder.sweepTemporaries(folder);
@@ -107,7 +110,7 @@ final class CampaignRun {
             int n = 0;
             for (Variant f : c.variants()) {
                 n++;
-                int code = runFault(c, f, folder.resolve(CampaignConfig.folderOf(f)), n);
+                int code = runFault(c, f, folder, n);
                 if (code != ExitCode.OK) {
                     return code;
                 }
@@ -130,10 +133,11 @@ final class CampaignRun {
         return ExitCode.OK;
     }
 
-    /** The trials of one fault, into {@code sub}: skipped when complete, resumed when a kill interrupted them. */
-    private int runFault(CampaignConfig c, Variant f, Path sub, int n) throws IOException, UsageException {
+    /** The trials of one fault, into its sub-folder: skipped when complete, resumed when a kill interrupted them. */
+    private int runFault(CampaignConfig c, Variant f, Path folder, int n) throws IOException, UsageException {
+        Path sub = folder.resolve(CampaignConfig.folderOf(f));
         if (ResultsRecorder.isComplete(sub)) {
-            CampaignFinisher.check(Manifest.read(sub), c, f, sub);
+            CampaignFinisher.check(Manifest.read(sub), c, f, folder);
             return ExitCode.OK;
         }
         ExperimentConfig config = c.trialsOf(f);
@@ -142,7 +146,7 @@ final class CampaignRun {
         try {
             if (Files.isRegularFile(sub.resolve(ResultsFolder.MANIFEST))) {
                 Manifest m = Manifest.read(sub);
-                CampaignFinisher.check(m, c, f, sub);
+                CampaignFinisher.check(m, c, f, folder);
                 recorder = ResultsRecorder.resume(sub, m, execution, System::nanoTime, BuiltinCar.FACTORY);
             } else {
                 recorder = ResultsRecorder.create(sub, new Manifest(config, Version.current(), Shard.WHOLE, false, false),
@@ -173,7 +177,7 @@ final class CampaignRun {
         } catch (IllegalStateException | UncheckedIOException e) {
             err.println("sitcov: run: " + e.getMessage());
             err.println("sitcov: run: what was judged is kept in " + sub + "; continue with 'run --resume "
-                    + sub.getParent() + "'.");
+                    + folder + "'.");
             return ExitCode.FAILURE;
         } finally {
             recorder.close();

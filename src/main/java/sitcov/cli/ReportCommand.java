@@ -49,6 +49,9 @@ final class ReportCommand implements Command {
             if (campaign) {
                 // a campaign's own files, written again from its faults' sub-folders (experiments/README.md,
                 // "Campaigns: falsifying one version")
+                if (!sitcov.results.CampaignManifest.read(folder).checked()) {
+                    err.println("sitcov: report: " + sitcov.results.CampaignManifest.uncheckedWarning(folder) + ".");
+                }
                 CampaignFinisher.report(folder);
             } else {
                 Manifest manifest = Manifest.read(folder);

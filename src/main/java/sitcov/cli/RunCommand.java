@@ -55,18 +55,20 @@ final class RunCommand implements Command {
     public String synopsis() {
         return "PRESET [--out DIR (default: target/results/PRESET-seedS)] [--seed MASTER] [--replications N] [--threads T] [--fork on|off]"
                 + " [--shard K/N] [--dry-run]\n"
-                + "       " + Main.LAUNCHER + " run --resume DIR [--threads T] [--fork on|off]";
+                + "       " + Main.LAUNCHER + " run --resume DIR [--threads T] [--fork on|off]\n"
+                + "       " + Main.LAUNCHER + " run --again DIR [--out NEW] [--threads T] [--fork on|off] [--dry-run]";
     }
 
     @Override
     public String summary() {
-        return "run an experiment preset (smoke, paper-rq1, ...) into a results folder; resume a killed run; run a shard";
+        return "run an experiment preset (smoke, paper-rq1, ...) into a results folder; resume a killed run; run a folder's"
+                + " experiment again; run a shard";
     }
 
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--out", "--seed", "--replications", "--threads", "--fork", "--shard",
-                "--resume", "--controller", "--variants"), Set.of("--dry-run"));
+                "--resume", "--again", "--controller", "--variants"), Set.of("--dry-run"));
         int threads = options.threads(err);
         fork = options.forks();
         if (options.value("--resume").isPresent()) {
@@ -74,6 +76,9 @@ final class RunCommand implements Command {
                 throw new UsageException("run: --dry-run checks a preset before it runs; it does not go with --resume.");
             }
             return resume(options, threads, out, err);
+        }
+        if (options.value("--again").isPresent()) {
+            return again(options, threads, out, err);
         }
         if (options.positional().size() != 1) {
             throw new UsageException("run: name one preset, e.g. 'run smoke' or 'run experiments/paper-rq1.properties',"
@@ -105,7 +110,11 @@ final class RunCommand implements Command {
      */
     int start(ExperimentConfig config, Options options, String source, int threads, PrintStream out, PrintStream err)
             throws UsageException {
-        Shard shard = shard(options, config);
+        return start(config, shard(options, config), options, source, threads, out, err);
+    }
+
+    private int start(ExperimentConfig config, Shard shard, Options options, String source, int threads, PrintStream out,
+                      PrintStream err) throws UsageException {
         if (options.has("--dry-run")) {
             if (options.has("--out")) {
                 folder(options, config, shard);
@@ -145,6 +154,39 @@ final class RunCommand implements Command {
         }
         Path folder = folder(options, c.name(), c.masterSeed(), c.trials(), Shard.WHOLE);
         return new CampaignRun(drivers, threads, fork, out, err).start(c, folder);
+    }
+
+    /**
+     * {@code run --again DIR}: the experiment or campaign DIR's manifest describes (its shard too), run again
+     * into a new folder; what a refused folder's message advises, since the preset it came from may lie anywhere.
+     */
+    private int again(Options options, int threads, PrintStream out, PrintStream err) throws UsageException {
+        if (!options.positional().isEmpty() || options.has("--resume") || options.has("--seed") || options.has("--shard")
+                || options.has("--replications") || options.has("--controller") || options.has("--variants")) {
+            throw new UsageException("run: --again DIR takes the experiment from DIR's manifest; give only --out, --threads,"
+                    + " --fork and --dry-run beside it.");
+        }
+        Path folder = Path.of(options.value("--again").get());
+        boolean campaign = CampaignManifest.isCampaign(folder);
+        if (!campaign && !Files.isRegularFile(folder.resolve(ResultsFolder.MANIFEST))) {
+            throw new UsageException("run: --again " + Options.shown(folder) + " is not a results folder (it has no "
+                    + ResultsFolder.MANIFEST + "); name the folder whose experiment to run again.");
+        }
+        CampaignConfig c;
+        Manifest manifest;
+        try {
+            c = campaign ? CampaignManifest.read(folder).config() : null;
+            manifest = campaign ? null : Manifest.read(folder);
+        } catch (IOException e) {
+            throw new UsageException("run: cannot read " + folder + ": " + IoReason.of(e, folder) + ".");
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("run: --again " + folder + ": " + e.getMessage() + ".");
+        }
+        if (campaign) {
+            return campaign(c, options, threads, out, err);
+        }
+        return start(manifest.config(), manifest.shard(), options, folder.resolve(ResultsFolder.MANIFEST).toString(),
+                threads, out, err);
     }
 
     private static ResultsRecorder create(Path folder, Manifest manifest, Map<String, String> execution)

@@ -78,7 +78,7 @@ public final class CampaignFinisher {
         for (Variant f : c.variants()) {
             Path sub = folder.resolve(CampaignConfig.folderOf(f));
             Manifest m = Manifest.read(sub);
-            check(m, c, f, sub);
+            check(m, c, f, folder);
             if (!m.complete()) {
                 throw new IllegalArgumentException(sub + " is not complete; finish the campaign with 'run --resume " + folder
                         + "'");
@@ -96,13 +96,13 @@ public final class CampaignFinisher {
         return CampaignAnalysis.of(c, trials);
     }
 
-    /** Refuses a sub-folder that is not the experiment the campaign implies for {@code fault}. */
-    public static void check(Manifest m, CampaignConfig c, Variant fault, Path sub) {
+    /** Refuses the sub-folder of {@code campaign} that is not the experiment the campaign implies for {@code fault}. */
+    public static void check(Manifest m, CampaignConfig c, Variant fault, Path campaign) {
         Manifest expected = new Manifest(c.trialsOf(fault), m.version(), Shard.WHOLE, m.complete(), m.resumed());
         if (!expected.identity().equals(m.identity()) || !m.shard().isWhole()) {
-            throw new IllegalArgumentException(sub + " holds another experiment than this campaign's trials of fault "
-                    + fault.id() + " (its manifest differs); put back the folder the campaign wrote, or run the campaign"
-                    + " again into a new folder");
+            throw new IllegalArgumentException(campaign.resolve(CampaignConfig.folderOf(fault)) + " holds another experiment"
+                    + " than this campaign's trials of fault " + fault.id() + " (its manifest differs); put back the folder"
+                    + " the campaign wrote, or run the campaign again into a new folder: " + Manifest.again(campaign));
         }
     }
 

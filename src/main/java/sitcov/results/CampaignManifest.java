@@ -6,13 +6,16 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Properties;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.ExperimentConfig;
@@ -25,10 +28,22 @@ import sitcov.judge.VariantList;
  * {@code campaign.properties}: what fixes a campaign's results folder (experiments/README.md, "Campaigns: falsifying
  * one version") and whether it is complete. Each fault's sub-folder has its own manifest, checked
  * against the one this one implies, so a campaign folder is resumed or reported from it alone.
+ *
+ * <p>Its {@code checks} line guards it as a manifest's does ({@link ManifestChecks}): a fault dropped from
+ * it by hand would otherwise pass, since the sub-folders left are each checked only against it.
+ * {@code checked} is false for a folder written before campaigns were checked: it is read, and
+ * written again, without them.
  */
-public record CampaignManifest(CampaignConfig config, String version, boolean complete) {
+public record CampaignManifest(CampaignConfig config, String version, boolean complete, boolean checked) {
     public static final String FILE = ResultsFolder.CAMPAIGN_MANIFEST;
     private static final String HEADER = "# sitcov campaign manifest";
+    /** The sub-folders a campaign writes: one a variant ({@link CampaignConfig#folderOf}). */
+    private static final Pattern SUB_FOLDER = Pattern.compile("(fault|variant)-\\d+");
+
+    /** A manifest with checks, as every campaign is written now. */
+    public CampaignManifest(CampaignConfig config, String version, boolean complete) {
+        this(config, version, complete, true);
+    }
 
     /** Whether {@code folder} holds a campaign (rather than one experiment). */
     public static boolean isCampaign(Path folder) {
@@ -36,7 +51,7 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
     }
 
     public CampaignManifest complete(boolean done) {
-        return new CampaignManifest(config, version, done);
+        return new CampaignManifest(config, version, done, checked);
     }
 
     List<String> lines() {
@@ -58,11 +73,13 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
         m.put("controller", c.controller());
         m.put("grid", ResultsFolder.GRID);
         m.put("grid_sha256", Manifest.sha256(c.grid().format()));
-        m.put("complete", Boolean.toString(complete));
-        List<String> rows = new ArrayList<>();
-        rows.add(HEADER);
-        m.forEach((k, v) -> rows.add(k + "=" + v));
-        return rows;
+        return ManifestChecks.lines(HEADER, m, checked, complete);
+    }
+
+    /** What to say of a campaign written before its manifest was checked, which is read as it is. */
+    public static String uncheckedWarning(Path folder) {
+        return "warning: " + folder.resolve(FILE) + " was written before sitcov checked it, so a hand edit to it cannot be"
+                + " detected (its sub-folders' can); for a campaign that is checked, " + Manifest.again(folder);
     }
 
     public void write(Path folder) throws IOException {
@@ -74,28 +91,49 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
     public static CampaignManifest read(Path folder) throws IOException {
         Path file = folder.resolve(FILE);
         Properties p = new Properties();
+        String text;
         try {
-            p.load(new StringReader(Files.readString(file, StandardCharsets.UTF_8)));
+            text = Files.readString(file, StandardCharsets.UTF_8);
+            p.load(new StringReader(text));
         } catch (NoSuchFileException e) {
             throw new IllegalArgumentException(folder + " is not a campaign's results folder: it has no " + FILE);
         }
+        String fix = "put " + FILE + " back as it was, or run the campaign again into a new folder";
+        if (p.containsKey(ManifestChecks.CHECKS)) {
+            ManifestChecks.verify(text, file, fix);
+        }
+        CampaignConfig c;
         try {
             GridDefinition grid = GridDefinition.read(folder.resolve(ResultsFolder.GRID));
             if (!Manifest.sha256(grid.format()).equals(required(p, "grid_sha256"))) {
                 throw new IllegalArgumentException(ResultsFolder.GRID + " does not match grid_sha256: the grid was edited");
             }
-            CampaignConfig c = new CampaignConfig(required(p, "preset"), Long.parseLong(required(p, "master_seed")),
+            c = new CampaignConfig(required(p, "preset"), Long.parseLong(required(p, "master_seed")),
                     p.containsKey("variants") ? VariantList.parse(p.getProperty("variants"))
                             : ExperimentConfig.seeded(FaultSet.parse(required(p, "faults"))),
                     List.of(required(p, "drivers").split(",")),
                     Integer.parseInt(required(p, "trials")), Long.parseLong(required(p, "tick_budget")),
                     Integer.parseInt(required(p, "candidate_limit")), grid, FaultyRuns.ofKey(required(p, "faulty_runs")),
                     required(p, "controller"));
-            return new CampaignManifest(c, required(p, "sitcov_version"), Boolean.parseBoolean(required(p, "complete")));
         } catch (NoSuchFileException e) {
             throw new IllegalArgumentException(folder + " lacks " + e.getFile() + "; it is not a whole campaign folder");
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException(file + ": " + e.getMessage(), e);
+        }
+        unlisted(folder, c).ifPresent(sub -> {
+            throw new IllegalArgumentException(file + " lists no variant of " + folder.resolve(sub) + ", a sub-folder the"
+                    + " campaign wrote: the file was changed after sitcov wrote it; " + fix);
+        });
+        return new CampaignManifest(c, required(p, "sitcov_version"), Boolean.parseBoolean(required(p, "complete")),
+                p.containsKey(ManifestChecks.CHECKS));
+    }
+
+    /** A sub-folder of the campaign's kind that none of its variants names: what a variant dropped by hand leaves. */
+    private static Optional<String> unlisted(Path folder, CampaignConfig c) throws IOException {
+        Set<String> listed = c.variants().stream().map(CampaignConfig::folderOf).collect(Collectors.toSet());
+        try (Stream<Path> entries = Files.list(folder)) {
+            return entries.filter(Files::isDirectory).map(d -> d.getFileName().toString())
+                    .filter(n -> SUB_FOLDER.matcher(n).matches() && !listed.contains(n)).sorted().findFirst();
         }
     }
 

@@ -35,7 +35,7 @@ public final class JournalFiles {
         ExperimentConfig config = manifest.config();
         JournalCheck check = JournalCheck.of(manifest);
         String fix = "put the folder back as sitcov wrote it, or run the experiment again into a new folder: "
-                + manifest.rerun();
+                + manifest.rerun(folder);
         RunsCsv runsCsv = new RunsCsv(config);
         Path runsFile = folder.resolve(ResultsFolder.RUNS);
         JournalCheck.Checked runLines = lines(folder, ResultsFolder.RUNS, check, manifest.complete(), fix);

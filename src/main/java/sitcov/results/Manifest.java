@@ -9,7 +9,6 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HexFormat;
 import java.util.List;
@@ -39,8 +38,8 @@ import sitcov.judge.FaultyRuns;
 public record Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed,
                        boolean checked) {
     private static final String HEADER = "# sitcov experiment manifest";
-    static final String CHECKS = "checks";
-    private static final String COMPLETE = "complete";
+    static final String CHECKS = ManifestChecks.CHECKS;
+    private static final String COMPLETE = ManifestChecks.COMPLETE;
 
     /** A manifest with checks, as every folder is written now. */
     public Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed) {
@@ -73,10 +72,22 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         return sha256(text.toString());
     }
 
-    /** The command that runs this experiment again into a new folder. */
-    String rerun() {
-        return "run " + config.name() + " --seed " + config.masterSeed() + " --replications " + config.replications()
-                + (shard.isWhole() ? "" : " --shard " + shard) + " --out NEW_FOLDER";
+    /**
+     * The command that runs the experiment of {@code folder} again into a new folder, as it would be typed
+     * where {@code folder} names it. It names the folder rather than the preset, which may lie anywhere; a
+     * campaign's sub-folder is run again with its campaign.
+     */
+    String rerun(Path folder) {
+        Path f = folder.normalize();
+        Path parent = f.getParent() != null ? f.getParent() : Path.of(f.toString().isEmpty() ? ".." : ".");
+        Path name = folder.toAbsolutePath().normalize().getFileName();
+        boolean sub = name != null && CampaignManifest.isCampaign(parent) && config.name().endsWith("-" + name);
+        return again(sub ? parent : f);
+    }
+
+    /** The command that runs the experiment or campaign of {@code folder} again into a new folder. */
+    public static String again(Path folder) {
+        return "run --again " + ShellWord.of(folder.toString().isEmpty() ? "." : folder.toString());
     }
 
     /** The keys that say which experiment this is: folders to merge must agree on all of them. */
@@ -120,16 +131,7 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         if (resumed) {
             m.put("resumed", "true");
         }
-        if (checked) {
-            List<String> crcs = new ArrayList<>();
-            m.forEach((k, v) -> crcs.add(JournalCheck.crc(k + "=" + v)));
-            m.put(CHECKS, String.join(" ", crcs));
-        }
-        m.put(COMPLETE, Boolean.toString(complete));
-        List<String> rows = new ArrayList<>();
-        rows.add(HEADER);
-        m.forEach((k, v) -> rows.add(k + "=" + v));
-        return rows;
+        return ManifestChecks.lines(HEADER, m, checked, complete);
     }
 
     /** Writes the manifest and the grid file beside it. */
@@ -156,7 +158,7 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
             p.load(r);
         }
         if (p.containsKey(CHECKS)) {
-            verify(text, file);
+            ManifestChecks.verify(text, file, "put the manifest back as it was, or run the experiment again into a new folder");
         }
         try {
             GridDefinition grid = GridDefinition.read(folder.resolve(ResultsFolder.GRID));
@@ -188,65 +190,6 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException(file + ": " + e.getMessage(), e);
         }
-    }
-
-    /**
-     * Refuses a manifest whose lines are not those its checks were made of, naming the keys that
-     * were changed, added or removed.
-     */
-    private static void verify(String text, Path file) {
-        List<String> lines = new ArrayList<>();
-        String checks = "";
-        for (String line : text.split("\n", -1)) {
-            String key = key(line);
-            if (key.equals(CHECKS)) {
-                checks = line.substring(line.indexOf('=') + 1).strip();
-            } else if (!key.isEmpty() && !key.equals(COMPLETE)) {
-                lines.add(line);
-            }
-        }
-        List<String> stored = checks.isEmpty() ? List.of() : List.of(checks.split(" +"));
-        List<String> changed = new ArrayList<>();
-        if (stored.size() == lines.size()) {
-            for (int i = 0; i < lines.size(); i++) {
-                if (!JournalCheck.crc(lines.get(i)).equals(stored.get(i))) {
-                    changed.add(key(lines.get(i)));
-                }
-            }
-        } else {
-            lines.stream().filter(l -> !stored.contains(JournalCheck.crc(l))).forEach(l -> changed.add(key(l)));
-        }
-        if (changed.isEmpty() && stored.size() == lines.size()) {
-            return;
-        }
-        String what = changed.isEmpty() ? removed(lines, stored) : String.join(", ", changed) + (changed.size() == 1
-                ? " was" : " were") + (stored.size() == lines.size() ? " changed" : " added or changed");
-        throw new IllegalArgumentException(file + ": " + what + " after sitcov wrote it (the manifest's '" + CHECKS
-                + "' line no longer matches); put the manifest back as it was, or run the experiment again into a"
-                + " new folder");
-    }
-
-    /** Where lines are missing: before the first line that is out of step with the checks. */
-    private static String removed(List<String> lines, List<String> stored) {
-        if (lines.size() > stored.size()) {
-            return "a line was repeated";
-        }
-        for (int i = 0; i < lines.size(); i++) {
-            if (!JournalCheck.crc(lines.get(i)).equals(stored.get(i))) {
-                return "a line before '" + key(lines.get(i)) + "' was removed";
-            }
-        }
-        return lines.isEmpty() ? "its lines were removed" : "a line after '" + key(lines.get(lines.size() - 1)) + "' was removed";
-    }
-
-    /** The key of a properties line; empty for a comment or a blank line. */
-    private static String key(String line) {
-        String s = line.strip();
-        if (s.isEmpty() || s.startsWith("#") || s.startsWith("!")) {
-            return "";
-        }
-        int eq = s.indexOf('=');
-        return (eq < 0 ? s : s.substring(0, eq)).strip();
     }
 
     private static String required(Properties p, String key) {

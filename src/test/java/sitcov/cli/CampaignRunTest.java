@@ -37,7 +37,7 @@ class CampaignRunTest {
     Path dir;
 
     /** The tiny campaign run once, on 2 threads, shared by the tests that only read it. */
-    private static synchronized Path reference() throws IOException {
+    static synchronized Path reference() throws IOException {
         if (reference == null) {
             Path folder = Files.createTempDirectory("campaign-reference").resolve("run");
             CliRunner r = CliRunner.run("run", TINY, "--out", folder.toString(), "--threads", "2");
@@ -194,12 +194,55 @@ class CampaignRunTest {
         Path folder = dir.resolve("edited");
         ResultsFolders.copy(reference(), folder);
         Path manifest = folder.resolve(CampaignManifest.FILE);
-        Files.writeString(manifest, Files.readString(manifest).replace("tick_budget=10000", "tick_budget=20000"));
+        String written = Files.readString(manifest);
         byte[] before = Files.readAllBytes(folder.resolve("campaign.csv"));
+        Files.writeString(manifest, written.replace("tick_budget=10000", "tick_budget=20000"));
         CliRunner r = CliRunner.run("report", folder.toString());
         assertEquals(ExitCode.USAGE, r.exitCode(), r.err());
-        assertTrue(r.err().contains("holds another experiment than this campaign's trials of fault 8"), r.err());
+        assertTrue(r.err().contains(manifest + ": tick_budget was changed after sitcov wrote it"), r.err());
+        // a campaign written before its manifest was checked: its sub-folders' manifests still refuse the edit
+        Files.writeString(manifest, written.replaceAll("(?m)^checks=.*\n", "").replace("tick_budget=10000",
+                "tick_budget=20000"));
+        CliRunner unchecked = CliRunner.run("report", folder.toString());
+        assertEquals(ExitCode.USAGE, unchecked.exitCode(), unchecked.err());
+        assertTrue(unchecked.err().contains("holds another experiment than this campaign's trials of fault 8"), unchecked.err());
+        assertTrue(unchecked.err().contains(manifest + " was written before sitcov checked it"), unchecked.err());
         assertArrayEquals(before, Files.readAllBytes(folder.resolve("campaign.csv")), "nothing was rewritten");
+    }
+
+    @Test
+    void aFaultDroppedFromTheCampaignsManifestIsRefusedByReportAndByResume() throws IOException {
+        Path folder = dir.resolve("dropped");
+        ResultsFolders.copy(reference(), folder);
+        Path manifest = folder.resolve(CampaignManifest.FILE);
+        String written = Files.readString(manifest);
+        assertTrue(written.contains("\nfaults=8,17\n") && written.contains("\nchecks="), written);
+        byte[] verdict = Files.readAllBytes(folder.resolve("verdict.txt"));
+        Files.writeString(manifest, written.replace("\nfaults=8,17\n", "\nfaults=17\n"));
+        CliRunner report = CliRunner.run("report", folder.toString());
+        assertEquals(ExitCode.USAGE, report.exitCode(), report.err());
+        assertTrue(report.err().contains(manifest + ": faults was changed after sitcov wrote it"), report.err());
+        assertArrayEquals(verdict, Files.readAllBytes(folder.resolve("verdict.txt")), "the verdict keeps fault 8");
+
+        // left incomplete (complete= is the one line the tool flips), resume must not mark it complete without fault 8
+        String incomplete = written.replace("\ncomplete=true\n", "\ncomplete=false\n");
+        Files.writeString(manifest, incomplete.replace("\nfaults=8,17\n", "\nfaults=17\n"));
+        CliRunner resume = CliRunner.run("run", "--resume", folder.toString(), "--threads", "1");
+        assertEquals(ExitCode.USAGE, resume.exitCode(), resume.err());
+        assertTrue(resume.err().contains("faults was changed after sitcov wrote it"), resume.err());
+        assertTrue(Files.readString(manifest).contains("\ncomplete=false\n"), "still incomplete");
+
+        // one written before campaigns were checked: the sub-folder of the fault it no longer lists gives it away
+        Files.writeString(manifest, incomplete.replaceAll("(?m)^checks=.*\n", "").replace("\nfaults=8,17\n",
+                "\nfaults=17\n"));
+        for (List<String> args : List.of(List.of("report", folder.toString()),
+                List.of("run", "--resume", folder.toString(), "--threads", "1"))) {
+            CliRunner r = CliRunner.run(args.toArray(String[]::new));
+            assertEquals(ExitCode.USAGE, r.exitCode(), args + ": " + r.err());
+            assertTrue(r.err().contains(manifest + " lists no variant of " + folder.resolve("fault-08")), r.err());
+        }
+        assertTrue(Files.readString(manifest).contains("\ncomplete=false\n"), "still incomplete");
+        assertArrayEquals(verdict, Files.readAllBytes(folder.resolve("verdict.txt")), "nothing was rewritten");
     }
 
     @Test
@@ -241,7 +284,7 @@ class CampaignRunTest {
     }
 
     /** Every result file of the two campaign folders, sub-folders included, is the same byte for byte. */
-    private static void assertSame(Path expected, Path actual) throws IOException {
+    static void assertSame(Path expected, Path actual) throws IOException {
         List<String> files = resultFiles(expected);
         assertTrue(files.contains("campaign.csv") && files.contains("fault-17/runs.csv"), "a campaign folder: " + files);
         assertEquals(files, resultFiles(actual));

@@ -61,6 +61,17 @@ final class PrintedCommands {
         return commands;
     }
 
+    /**
+     * The command a refusal's message advises (the words after {@code lead} to the end of its line, less the
+     * sentence's full stop), as arguments to run.
+     */
+    static List<String> advised(String message, String lead) {
+        String line = message.lines().filter(l -> l.contains(lead)).findFirst()
+                .orElseThrow(() -> new AssertionError("no advice '" + lead + "' in: " + message));
+        String command = line.substring(line.indexOf(lead) + lead.length());
+        return shellWords(command.endsWith(".") ? command.substring(0, command.length() - 1) : command);
+    }
+
     private static List<String> arguments(List<String> words, Path folder, Path scratch) {
         List<String> args = new ArrayList<>();
         for (int i = 0; i < words.size(); i++) {

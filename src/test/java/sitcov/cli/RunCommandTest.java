@@ -165,6 +165,30 @@ class RunCommandTest {
     }
 
     @Test
+    void runAgainRunsAFoldersExperimentShardAndAllIntoANewFolderAndTakesNothingThatWouldChangeIt() throws Exception {
+        Path shard = dir.resolve("shard-2");
+        CliRunner first = CliRunner.run("run", ResultsFolders.TINY, "--shard", "2/3", "--out", shard.toString());
+        assertEquals(0, first.exitCode(), first.err());
+        Path again = dir.resolve("again");
+        CliRunner r = CliRunner.run("run", "--again", shard.toString(), "--out", again.toString(), "--threads", "1");
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.err().contains("run: tiny shard 2/3: 1 replications"), r.err());
+        ResultsFolders.assertSameResults(shard, again);
+        Path never = dir.resolve("never");
+        for (String option : new String[] {"--seed", "--replications", "--shard", "--controller"}) {
+            CliRunner refused = CliRunner.run("run", "--again", shard.toString(), option, "1/3", "--out", never.toString());
+            assertEquals(ExitCode.USAGE, refused.exitCode(), option + ": " + refused.err());
+            assertTrue(refused.err().contains("--again DIR takes the experiment from DIR's manifest; give only --out,"
+                    + " --threads, --fork and --dry-run beside it."), refused.err());
+        }
+        CliRunner none = CliRunner.run("run", "--again", dir.toString(), "--out", never.toString());
+        assertEquals(ExitCode.USAGE, none.exitCode(), none.err());
+        assertTrue(none.err().contains("--again " + dir + " is not a results folder (it has no manifest.properties)"),
+                none.err());
+        assertFalse(Files.exists(never), "nothing was written for a refused command");
+    }
+
+    @Test
     void aDryRunChecksThePresetAndTheShardAndWritesNothing() {
         Path out = dir.resolve("never");
         CliRunner ok = CliRunner.run("run", ResultsFolders.TINY, "--shard", "3/3", "--dry-run", "--out", out.toString(),

@@ -84,16 +84,16 @@ final class VersionsCommand implements Command {
             throw new UsageException("versions: name the reference controller and its variants, e.g. --reference builtin"
                     + " --variants 'builtin:16;builtin:17', or a preset with reference= and variants=.");
         }
+        if (VariantList.namesNone(variants)) {
+            // 'none' or only separators: a comparison with nothing to compare is not one
+            throw new UsageException("versions: --variants '" + variants + "' names no variant; name at least one,"
+                    + " e.g. --variants 'builtin:16', separated by ';'.");
+        }
         List<Variant> list;
         try {
             list = VariantList.parse(variants);
         } catch (IllegalArgumentException e) {
             throw new UsageException("versions: variants: " + e.getMessage() + ".");
-        }
-        if (list.isEmpty()) {
-            // 'none' or only separators: a comparison with nothing to compare is not one
-            throw new UsageException("versions: --variants '" + variants + "' names no variant; name at least one,"
-                    + " e.g. --variants 'builtin:16', separated by ';'.");
         }
         for (Variant v : list) {
             if (v instanceof Variant.Controller c) {

@@ -33,6 +33,10 @@ public final class VariantList {
         if (t.equals(NONE)) {
             return List.of();
         }
+        if (namesNone(t)) {
+            throw new IllegalArgumentException("'" + t + "' names no variant; name at least one, e.g. builtin:16, separated"
+                    + " by ';', or write " + NONE + " for none");
+        }
         List<String> specs = new ArrayList<>();
         for (String raw : split(t)) {
             String spec = raw.strip();
@@ -55,6 +59,11 @@ public final class VariantList {
             }
         }
         return Variant.number(specs, VariantList::seeded);
+    }
+
+    /** Whether {@code text} lists no variant: {@code none}, or nothing but separators and blanks. */
+    public static boolean namesNone(String text) {
+        return text.strip().equals(NONE) || split(text).stream().allMatch(String::isBlank);
     }
 
     /** Splits at ';' outside quotes: a program's arguments may quote one. */

@@ -47,13 +47,32 @@ class VersionsCommandTest {
     }
 
     @Test
-    void aComparisonWithNoVariantIsRefusedBeforeAnythingRuns(@TempDir Path dir) {
+    void aComparisonWithNoVariantIsRefusedBeforeAnythingRuns(@TempDir Path dir) throws Exception {
         Path out = dir.resolve("never");
-        CliRunner r = CliRunner.run("versions", "--reference", "builtin", "--variants", "none", "--maps", "2", "--out",
-                out.toString());
-        assertEquals(ExitCode.USAGE, r.exitCode(), r.out());
-        assertTrue(r.err().contains("names no variant"), r.err());
-        assertFalse(java.nio.file.Files.exists(out), "nothing is written");
+        for (String variants : List.of("none", ";", ";;", " ; ", "\t;")) {
+            CliRunner r = CliRunner.run("versions", "--reference", "builtin", "--variants", variants, "--maps", "2", "--out",
+                    out.toString());
+            assertEquals(ExitCode.USAGE, r.exitCode(), "'" + variants + "': " + r.out() + r.err());
+            assertTrue(r.err().contains("versions: --variants '" + variants.strip() + "' names no variant; name at least"
+                    + " one, e.g. --variants 'builtin:16', separated by ';'."), r.err());
+        }
+        Path preset = dir.resolve("nothing.properties");
+        Files.writeString(preset, "reference=builtin\nvariants=;\nmaps=2\n");
+        CliRunner fromPreset = CliRunner.run("versions", preset.toString(), "--out", out.toString());
+        assertEquals(ExitCode.USAGE, fromPreset.exitCode(), fromPreset.out() + fromPreset.err());
+        assertTrue(fromPreset.err().contains("names no variant"), fromPreset.err());
+        assertFalse(Files.exists(out), "nothing is written");
+    }
+
+    @Test
+    void aPresetWhoseVariantsAreOnlySeparatorsIsToldToNameOneOrWriteNone(@TempDir Path dir) throws Exception {
+        Path preset = dir.resolve("separators.properties");
+        Files.writeString(preset, Files.readString(Path.of(ResultsFolders.TINY)).replace("faults=14,19", "variants=;"));
+        CliRunner r = CliRunner.run("run", preset.toString(), "--out", dir.resolve("never").toString());
+        assertEquals(ExitCode.USAGE, r.exitCode(), r.err());
+        assertTrue(r.err().contains("';' names no variant; name at least one, e.g. builtin:16, separated by ';', or write"
+                + " none for none."), r.err());
+        assertFalse(Files.exists(dir.resolve("never")), "nothing is written");
     }
 
     @Test

@@ -79,6 +79,30 @@ class InputLimitsTest {
     }
 
     @Test
+    void aCampaignsCandidateLimitIsHeldToTheLimitItsDocsGive() throws Exception {
+        int limit = sitcov.experiment.ExperimentConfig.MAX_CANDIDATES;
+        assertEquals(10_000_000, limit);
+        // the docs write it in groups of three digits
+        String written = "10 000 000";
+        String docs = Files.readString(Path.of("experiments", "README.md"));
+        String row = docs.lines().filter(l -> l.startsWith("| `candidate_limit` | a safety limit on the candidates of one"
+                + " trial")).findFirst().orElseThrow();
+        assertTrue(row.contains("at most " + written), row);
+        assertTrue(Files.readString(Path.of("src", "main", "java", "sitcov", "cli", "README.md"))
+                .contains(written + " in a campaign"), "the commands' limits name it too");
+        String base = Files.readString(Path.of("src", "test", "resources", "presets", "campaign-tiny.properties"));
+        Path preset = dir.resolve("campaign-limit.properties");
+        Files.writeString(preset, base + "candidate_limit=" + (limit + 1) + "\n");
+        refused("candidate_limit= needs a whole number from 1 to " + limit + ", not '" + (limit + 1) + "'", "run",
+                preset.toString(), "--out", dir.resolve("never").toString());
+        Files.writeString(preset, base + "candidate_limit=" + limit + "\n");
+        CliRunner r = CliRunner.run("run", preset.toString(), "--dry-run");
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.out().contains("campaign of 2 faults") && r.out().contains(": sound; a dry run"), r.out());
+        assertTrue(!Files.exists(dir.resolve("never")), "nothing ran");
+    }
+
+    @Test
     void aGridWhoseCellsCannotBeCountedIsRefused() throws Exception {
         StringBuilder edges = new StringBuilder();
         for (int i = 0; i <= 200; i++) {

@@ -62,7 +62,7 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
     /** What to say of a folder written before checks, which is read as it is. */
     public static String uncheckedWarning(Path folder) {
         return "warning: " + folder + " was written before sitcov checked its results folders, so a hand edit to it"
-                + " cannot be detected; run the experiment again into a new folder for one that is checked";
+                + " cannot be detected; for a folder that is checked, " + again(folder);
     }
 
     /** SHA-256 of the identity's lines: what keys the journal's checks to this experiment. */

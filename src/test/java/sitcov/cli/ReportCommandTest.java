@@ -135,6 +135,7 @@ class ReportCommandTest {
         CliRunner r = CliRunner.run("report", older.toString());
         assertEquals(0, r.exitCode(), r.err());
         assertTrue(r.err().contains("warning: " + older + " was written before sitcov checked its results folders"), r.err());
+        assertTrue(r.err().contains("for a folder that is checked, run --again " + older + "."), r.err());
         ResultsFolders.assertSameResults(expected, older);
         assertArrayEquals(Files.readAllBytes(expected.resolve(ResultsFolder.TIMINGS)),
                 Files.readAllBytes(older.resolve(ResultsFolder.TIMINGS)), "the journal keeps its older form");

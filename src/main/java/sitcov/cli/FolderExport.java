@@ -98,6 +98,75 @@ final class FolderExport {
 
     private static ExportCommand.Plan found(Path folder, Options options, ScenarioVersion version,
             java.io.PrintStream err) throws UsageException, IOException {
+        List<ResultsRows.Row> found = foundRows(folder, options);
+        List<String> index = new ArrayList<>(List.of(INDEX_HEADER));
+        Progress progress = new Progress(err, "export: found runs judged again", found.size(),
+                err == System.err && System.console() != null, System::nanoTime);
+        Shared shared = new Shared();
+        for (ResultsRows.Row row : found) {
+            WorldMap map = shared.map(folder, row, version);
+            String road = mapName(row.map().map()) + ".xodr";
+            Optional<Integer> variant = row.variant().map(Variant::id);
+            FaultVerdict verdict;
+            String runFile;
+            // every row is judged again before anything is written: a folder of another sitcov leaves nothing behind
+            if (FolderRecordings.has(folder, row)) {
+                verdict = replayed(folder, row, map).verdict().orElseThrow();
+                long until = verdict.newAccident().map(a -> a.tick() + AFTER_FAILURE_TICKS).orElse(Long.MAX_VALUE);
+                Recording r = RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, false)));
+                runFile = shared.run(new SameRun(row.map().map(), r.internalSeed(), variant, Math.min(until, r.stopAfter()),
+                        Optional.of(r.commands())), row, name -> fromRecording(name, road, r, row, map, false, until, version));
+            } else {
+                RecordedRows.refuseOtherController("export", folder, row);
+                verdict = checked(row, map).verdicts().get(0);
+                long until = verdict.newAccident().orElseThrow().tick() + AFTER_FAILURE_TICKS;
+                runFile = shared.run(new SameRun(row.map().map(), row.map().internalSeed(), variant, until, Optional.empty()),
+                        row, name -> new ExportCommand.Planned(name, () -> OpenScenario.recording(RunRecording.of(map,
+                                row.map().internalSeed(), Set.of(row.fault().orElseThrow()), BuiltinCar.FACTORY)
+                                .until(until), road, version)));
+            }
+            index.add(indexLine(row, verdict, mapName(row.map().map()), runFile));
+            progress.done(index.size() - 1);
+        }
+        List<ExportCommand.Planned> files = new ArrayList<>(shared.files);
+        files.add(new ExportCommand.Planned(ExportCommand.INDEX, () -> String.join("\n", index) + "\n"));
+        int maps = shared.maps.size();
+        int runs = shared.runs.size();
+        return new ExportCommand.Plan(files, to -> "Exported the " + found.size() + " runs of " + folder
+                + " that found a fault to " + to + ": " + maps + (maps == 1 ? " map" : " maps") + " (roads and situation)"
+                + " and " + runs + " faulty " + (runs == 1 ? "run" : "runs") + " (recorded to 5 s after the accident that"
+                + " found it; rows that ran the same run share its file); " + ExportCommand.INDEX + " names each row's files.");
+    }
+
+    /** What --found plans as its rows come: a road file and a situation a map, a file a distinct run. */
+    private static final class Shared {
+        private final List<ExportCommand.Planned> files = new ArrayList<>();
+        private final Map<MapId, WorldMap> maps = new HashMap<>();
+        private final Map<SameRun, String> runs = new HashMap<>();
+
+        /** The row's map, its two files planned the first time one of its rows comes. */
+        WorldMap map(Path folder, ResultsRows.Row row, ScenarioVersion version) throws IOException {
+            WorldMap map = maps.get(row.map().map());
+            if (map == null) {
+                map = ResultsRows.worldMap(folder, row.map());
+                maps.put(row.map().map(), map);
+                files.addAll(ExportCommand.mapFiles(mapName(row.map().map()), map, version));
+            }
+            return map;
+        }
+
+        /** The file of the run {@code same}: planned by {@code plan} under {@code row}'s name the first time. */
+        String run(SameRun same, ResultsRows.Row row, java.util.function.Function<String, ExportCommand.Planned> plan) {
+            return runs.computeIfAbsent(same, s -> {
+                String name = "row-" + row.number() + "-run.xosc";
+                files.add(plan.apply(name));
+                return name;
+            });
+        }
+    }
+
+    /** The rows whose fault was found (with --fault, those faults only); none is a mistake. */
+    private static List<ResultsRows.Row> foundRows(Path folder, Options options) throws UsageException, IOException {
         Optional<Set<Fault>> only = options.faults("--fault");
         List<ResultsRows.Row> rows = ResultsRows.all(folder);
         if (only.isPresent() && !rows.isEmpty()) {
@@ -116,58 +185,7 @@ final class FolderExport {
             throw new UsageException("export: no run in " + folder + " found " + only.map(f -> "fault "
                     + f.stream().map(Fault::id).sorted().toList()).orElse("a fault") + "; there is nothing to export.");
         }
-        List<ExportCommand.Planned> files = new ArrayList<>();
-        List<String> index = new ArrayList<>(List.of(INDEX_HEADER));
-        Progress progress = new Progress(err, "export: found runs judged again", found.size(),
-                err == System.err && System.console() != null, System::nanoTime);
-        // rows on one map share its files, and rows whose runs are the same one run file
-        Map<MapId, WorldMap> maps = new HashMap<>();
-        Map<SameRun, String> runFiles = new HashMap<>();
-        for (ResultsRows.Row row : found) {
-            String base = mapName(row.map().map());
-            WorldMap map = maps.get(row.map().map());
-            if (map == null) {
-                map = ResultsRows.worldMap(folder, row.map());
-                maps.put(row.map().map(), map);
-                files.addAll(ExportCommand.mapFiles(base, map, version));
-            }
-            String runFile = "row-" + row.number() + "-run.xosc";
-            Optional<Integer> variant = row.variant().map(Variant::id);
-            // every row is judged again before anything is written: a folder of another sitcov leaves nothing behind
-            if (FolderRecordings.has(folder, row)) {
-                FaultVerdict verdict = replayed(folder, row, map).verdict().orElseThrow();
-                long until = verdict.newAccident().map(a -> a.tick() + AFTER_FAILURE_TICKS).orElse(Long.MAX_VALUE);
-                Recording r = RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, false)));
-                SameRun same = new SameRun(row.map().map(), r.internalSeed(), variant,
-                        Math.min(until, r.stopAfter()), Optional.of(r.commands()));
-                if (!runFiles.containsKey(same)) {
-                    runFiles.put(same, runFile);
-                    files.add(fromRecording(runFile, base + ".xodr", r, row, map, false, until, version));
-                }
-                index.add(indexLine(row, verdict, base, runFiles.get(same)));
-                progress.done(index.size() - 1);
-                continue;
-            }
-            RecordedRows.refuseOtherController("export", folder, row);
-            JudgedMap judged = checked(row, map);
-            long until = judged.verdicts().get(0).newAccident().orElseThrow().tick() + AFTER_FAILURE_TICKS;
-            SameRun same = new SameRun(row.map().map(), row.map().internalSeed(), variant, until, Optional.empty());
-            if (!runFiles.containsKey(same)) {
-                runFiles.put(same, runFile);
-                WorldMap runMap = map;
-                files.add(new ExportCommand.Planned(runFile, () -> OpenScenario.recording(RunRecording.of(runMap,
-                        row.map().internalSeed(), Set.of(row.fault().orElseThrow()), BuiltinCar.FACTORY).until(until),
-                        base + ".xodr", version)));
-            }
-            index.add(indexLine(row, judged.verdicts().get(0), base, runFiles.get(same)));
-            progress.done(index.size() - 1);
-        }
-        files.add(new ExportCommand.Planned(ExportCommand.INDEX, () -> String.join("\n", index) + "\n"));
-        return new ExportCommand.Plan(files, to -> "Exported the " + found.size() + " runs of " + folder
-                + " that found a fault to " + to + ": " + maps.size() + (maps.size() == 1 ? " map" : " maps")
-                + " (roads and situation) and " + runFiles.size() + " faulty " + (runFiles.size() == 1 ? "run" : "runs")
-                + " (recorded to 5 s after the accident that found it; rows that ran the same run share its file); "
-                + ExportCommand.INDEX + " names each row's files.");
+        return found;
     }
 
     /**

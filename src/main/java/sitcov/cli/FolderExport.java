@@ -3,7 +3,9 @@ package sitcov.cli;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import sitcov.builtin.BuiltinCar;
@@ -12,15 +14,18 @@ import sitcov.export.OpenScenario;
 import sitcov.export.RunRecording;
 import sitcov.export.ScenarioVersion;
 import sitcov.faults.Fault;
+import sitcov.experiment.MapId;
 import sitcov.judge.FaultVerdict;
 import sitcov.judge.JudgedMap;
 import sitcov.judge.MapRunner;
 import sitcov.oracle.Accident;
 import sitcov.judge.RunObserver;
+import sitcov.judge.Variant;
 import sitcov.recording.FolderRecordings;
 import sitcov.recording.Recording;
 import sitcov.recording.RecordingFile;
 import sitcov.results.ResultsRows;
+import sitcov.vehicles.CommandLog;
 import sitcov.world.WorldMap;
 
 /**
@@ -93,6 +98,75 @@ final class FolderExport {
 
     private static ExportCommand.Plan found(Path folder, Options options, ScenarioVersion version,
             java.io.PrintStream err) throws UsageException, IOException {
+        List<ResultsRows.Row> found = foundRows(folder, options);
+        List<String> index = new ArrayList<>(List.of(INDEX_HEADER));
+        Progress progress = new Progress(err, "export: found runs judged again", found.size(),
+                err == System.err && System.console() != null, System::nanoTime);
+        Shared shared = new Shared();
+        for (ResultsRows.Row row : found) {
+            WorldMap map = shared.map(folder, row, version);
+            String road = mapName(row.map().map()) + ".xodr";
+            Optional<Integer> variant = row.variant().map(Variant::id);
+            FaultVerdict verdict;
+            String runFile;
+            // every row is judged again before anything is written: a folder of another sitcov leaves nothing behind
+            if (FolderRecordings.has(folder, row)) {
+                verdict = replayed(folder, row, map).verdict().orElseThrow();
+                long until = verdict.newAccident().map(a -> a.tick() + AFTER_FAILURE_TICKS).orElse(Long.MAX_VALUE);
+                Recording r = RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, false)));
+                runFile = shared.run(new SameRun(row.map().map(), r.internalSeed(), variant, Math.min(until, r.stopAfter()),
+                        Optional.of(r.commands())), row, name -> fromRecording(name, road, r, row, map, false, until, version));
+            } else {
+                RecordedRows.refuseOtherController("export", folder, row);
+                verdict = checked(row, map).verdicts().get(0);
+                long until = verdict.newAccident().orElseThrow().tick() + AFTER_FAILURE_TICKS;
+                runFile = shared.run(new SameRun(row.map().map(), row.map().internalSeed(), variant, until, Optional.empty()),
+                        row, name -> new ExportCommand.Planned(name, () -> OpenScenario.recording(RunRecording.of(map,
+                                row.map().internalSeed(), Set.of(row.fault().orElseThrow()), BuiltinCar.FACTORY)
+                                .until(until), road, version)));
+            }
+            index.add(indexLine(row, verdict, mapName(row.map().map()), runFile));
+            progress.done(index.size() - 1);
+        }
+        List<ExportCommand.Planned> files = new ArrayList<>(shared.files);
+        files.add(new ExportCommand.Planned(ExportCommand.INDEX, () -> String.join("\n", index) + "\n"));
+        int maps = shared.maps.size();
+        int runs = shared.runs.size();
+        return new ExportCommand.Plan(files, to -> "Exported the " + found.size() + " runs of " + folder
+                + " that found a fault to " + to + ": " + maps + (maps == 1 ? " map" : " maps") + " (roads and situation)"
+                + " and " + runs + " faulty " + (runs == 1 ? "run" : "runs") + " (recorded to 5 s after the accident that"
+                + " found it; rows that ran the same run share its file); " + ExportCommand.INDEX + " names each row's files.");
+    }
+
+    /** What --found plans as its rows come: a road file and a situation a map, a file a distinct run. */
+    private static final class Shared {
+        private final List<ExportCommand.Planned> files = new ArrayList<>();
+        private final Map<MapId, WorldMap> maps = new HashMap<>();
+        private final Map<SameRun, String> runs = new HashMap<>();
+
+        /** The row's map, its two files planned the first time one of its rows comes. */
+        WorldMap map(Path folder, ResultsRows.Row row, ScenarioVersion version) throws IOException {
+            WorldMap map = maps.get(row.map().map());
+            if (map == null) {
+                map = ResultsRows.worldMap(folder, row.map());
+                maps.put(row.map().map(), map);
+                files.addAll(ExportCommand.mapFiles(mapName(row.map().map()), map, version));
+            }
+            return map;
+        }
+
+        /** The file of the run {@code same}: planned by {@code plan} under {@code row}'s name the first time. */
+        String run(SameRun same, ResultsRows.Row row, java.util.function.Function<String, ExportCommand.Planned> plan) {
+            return runs.computeIfAbsent(same, s -> {
+                String name = "row-" + row.number() + "-run.xosc";
+                files.add(plan.apply(name));
+                return name;
+            });
+        }
+    }
+
+    /** The rows whose fault was found (with --fault, those faults only); none is a mistake. */
+    private static List<ResultsRows.Row> foundRows(Path folder, Options options) throws UsageException, IOException {
         Optional<Set<Fault>> only = options.faults("--fault");
         List<ResultsRows.Row> rows = ResultsRows.all(folder);
         if (only.isPresent() && !rows.isEmpty()) {
@@ -111,37 +185,20 @@ final class FolderExport {
             throw new UsageException("export: no run in " + folder + " found " + only.map(f -> "fault "
                     + f.stream().map(Fault::id).sorted().toList()).orElse("a fault") + "; there is nothing to export.");
         }
-        List<ExportCommand.Planned> files = new ArrayList<>();
-        List<String> index = new ArrayList<>(List.of(INDEX_HEADER));
-        Progress progress = new Progress(err, "export: found runs judged again", found.size(),
-                err == System.err && System.console() != null, System::nanoTime);
-        for (ResultsRows.Row row : found) {
-            String base = "row-" + row.number();
-            WorldMap map = ResultsRows.worldMap(folder, row.map());
-            files.addAll(ExportCommand.mapFiles(base, map, version));
-            // every row is judged again before anything is written: a folder of another sitcov leaves nothing behind
-            if (FolderRecordings.has(folder, row)) {
-                FaultVerdict verdict = replayed(folder, row, map).verdict().orElseThrow();
-                index.add(indexLine(row, verdict, base));
-                progress.done(index.size() - 1);
-                Optional<Accident> failure = verdict.newAccident();
-                long until = failure.map(a -> a.tick() + AFTER_FAILURE_TICKS).orElse(Long.MAX_VALUE);
-                files.add(fromRecording(base + "-run.xosc", base + ".xodr", folder, row, map, false, until, version));
-                continue;
-            }
-            RecordedRows.refuseOtherController("export", folder, row);
-            JudgedMap judged = checked(row, map);
-            index.add(indexLine(row, judged.verdicts().get(0), base));
-            progress.done(index.size() - 1);
-            long failure = judged.verdicts().get(0).newAccident().orElseThrow().tick();
-            files.add(new ExportCommand.Planned(base + "-run.xosc", () -> OpenScenario.recording(
-                    RunRecording.of(map, row.map().internalSeed(), Set.of(row.fault().orElseThrow()), BuiltinCar.FACTORY)
-                            .until(failure + AFTER_FAILURE_TICKS), base + ".xodr", version)));
-        }
-        files.add(new ExportCommand.Planned(ExportCommand.INDEX, () -> String.join("\n", index) + "\n"));
-        return new ExportCommand.Plan(files, to -> "Exported the " + found.size() + " runs of " + folder
-                + " that found a fault to " + to + ": each one's map, situation and faulty run (recorded to 5 s after the accident"
-                + " that found it); " + ExportCommand.INDEX + " lists them.");
+        return found;
+    }
+
+    /**
+     * What makes two found rows' exported runs the same document: the map, the seed, the variant, the tick the
+     * recording stops after and, for a run replayed from its recording, the commands it carried out.
+     */
+    private record SameRun(MapId map, long internalSeed, Optional<Integer> variant, long until,
+                           Optional<CommandLog> commands) {
+    }
+
+    /** The base name of a map's road file and situation: as {@code export --seed} names a generated map. */
+    static String mapName(MapId map) {
+        return map instanceof MapId.Situation s ? "situation-" + s.name() : "map-" + ((MapId.Seeded) map).externalSeed();
     }
 
     /** The row replayed from its recordings; it must give what runs.csv recorded, or the export stops. */
@@ -162,6 +219,12 @@ final class FolderExport {
                                                        WorldMap map, boolean reference, long until,
                                                        ScenarioVersion version) throws IOException {
         Recording r = RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, reference)));
+        return fromRecording(name, roadFile, r, row, map, reference, until, version);
+    }
+
+    private static ExportCommand.Planned fromRecording(String name, String roadFile, Recording r, ResultsRows.Row row,
+                                                       WorldMap map, boolean reference, long until,
+                                                       ScenarioVersion version) {
         Set<Fault> faults = reference ? Set.of() : row.fault().map(Set::of).orElse(Set.of());
         return new ExportCommand.Planned(name, () -> OpenScenario.recording(RunRecording.replayed(map, r.internalSeed(),
                 r.commands(), r.stopAfter(), faults).until(until), roadFile, version));
@@ -180,7 +243,7 @@ final class FolderExport {
     }
 
     /** The row's line of index.csv; a controller's failure has no place, so its x and y are left empty. */
-    private static String indexLine(ResultsRows.Row row, FaultVerdict verdict, String base) {
+    private static String indexLine(ResultsRows.Row row, FaultVerdict verdict, String base, String runFile) {
         Optional<Accident> accident = verdict.newAccident();
         long tick = accident.map(Accident::tick).orElse(verdict.faultyRun().ticks() - 1);
         String what = accident.map(a -> a.type().name()).orElse(verdict.newFailure().map(Object::toString).orElse(""));
@@ -190,6 +253,6 @@ final class FolderExport {
                 Long.toString(tick), String.format(java.util.Locale.ROOT, "%.1f", AsamFrame.seconds(tick)),
                 accident.map(a -> String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.x(a.x()))).orElse(""),
                 accident.map(a -> String.format(java.util.Locale.ROOT, "%.3f", AsamFrame.y(a.y()))).orElse(""),
-                base + ".xodr", base + ".xosc", base + "-run.xosc"));
+                base + ".xodr", base + ".xosc", runFile));
     }
 }

@@ -4,61 +4,160 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Which samples of a track become trajectory vertices. A player interpolates between vertices in
- * time; a sample is left out where that interpolation between the kept samples either side gives
- * its pose back within {@value #POSITION_TOLERANCE} m and {@value #HEADING_TOLERANCE_DEGREES}°.
- * Cars that stand or drive straight at a steady speed then cost two vertices, not one a tick,
- * and a replay stays within a millimetre of the run everywhere.
+ * Which samples of a track become trajectory vertices, and the numbers written for them. A player places
+ * a vehicle by its rear axle and interpolates linearly in time between vertices; a sample is left out
+ * where that interpolation between the vertices either side, as written, gives back its rear axle and its
+ * front within {@value #POSITION_TOLERANCE} m, and its heading within {@value #HEADING_TOLERANCE_DEGREES}°.
+ * Both ends, so that the same holds for any point of the car a player interpolates (its footprint's centre
+ * lies between them), and for a car that turns on the spot about its rear axle. Vertices are written to a
+ * millimetre and a ten-thousandth of a radian, and the test is made on those rounded numbers, so that the
+ * rounding counts against the tolerance instead of adding to it. Cars that stand or drive straight at a
+ * steady speed then cost two vertices, not one a tick.
  */
 final class KeptVertices {
     static final double POSITION_TOLERANCE = 0.001;
     static final double HEADING_TOLERANCE_DEGREES = 0.05;
+    /** Decimals of a vertex's position in metres: its millimetres. */
+    static final int POSITION_DECIMALS = 3;
+    /** Decimals of a vertex's heading in radians: 0.006°, a tenth of the tolerance. */
+    static final int HEADING_DECIMALS = 4;
+    private static final double POSITION_UNIT = 1e-3;
+    private static final double HEADING_UNIT = 1e-4;
+    private static final double HEADING_TOLERANCE = Math.toRadians(HEADING_TOLERANCE_DEGREES);
 
     private KeptVertices() {
     }
 
-    /** The indices of the samples to keep, in order; the first and last always. */
-    static List<Integer> of(List<RunRecording.Sample> samples) {
-        List<Integer> kept = new ArrayList<>();
+    /**
+     * A vertex as written: the index of its sample, and its rear axle in the ASAM frame as whole
+     * millimetres and its heading as whole ten-thousandths of a radian, in (−π, π].
+     */
+    record Vertex(int sample, long x, long y, long h) {
+        /** Its WorldPosition, written with exactly the numbers the thinning tested. */
+        void position(Xml xml) {
+            xml.open("Position");
+            xml.empty("WorldPosition", "x", Xml.decimal(x, POSITION_DECIMALS), "y", Xml.decimal(y, POSITION_DECIMALS),
+                    "h", Xml.decimal(h, HEADING_DECIMALS));
+            xml.close();
+        }
+    }
+
+    /** The vertices of {@code kind}'s track, in order; its first and last sample always. */
+    static List<Vertex> of(List<RunRecording.Sample> samples, ScenarioParts.Kind kind) {
+        Track t = new Track(samples, kind);
+        int n = samples.size();
+        List<Vertex> kept = new ArrayList<>();
+        kept.add(t.vertex(0));
         int anchor = 0;
-        kept.add(0);
-        int end = 1;
-        while (end < samples.size()) {
-            // grow the span from the anchor while every sample inside it is where interpolation puts it
-            int next = end + 1;
-            if (next < samples.size() && spans(samples, anchor, next)) {
-                end = next;
-                continue;
+        while (anchor < n - 1) {
+            // the span from the anchor is stretched by doubling, then narrowed by halving: a car that stands
+            // for a thousand ticks costs a few dozen tests of its span, not a thousand
+            int good = anchor + 1;
+            int bad = n;
+            for (int step = 2; anchor + step < n; step *= 2) {
+                if (!t.spans(anchor, anchor + step)) {
+                    bad = anchor + step;
+                    break;
+                }
+                good = anchor + step;
             }
-            kept.add(end);
-            anchor = end;
-            end = anchor + 1;
+            if (bad == n && good < n - 1 && t.spans(anchor, n - 1)) {
+                good = n - 1;
+            }
+            while (bad - good > 1 && good < n - 1) {
+                int middle = (good + bad) >>> 1;
+                if (t.spans(anchor, middle)) {
+                    good = middle;
+                } else {
+                    bad = middle;
+                }
+            }
+            kept.add(t.vertex(good));
+            anchor = good;
         }
         return kept;
     }
 
-    private static boolean spans(List<RunRecording.Sample> samples, int from, int to) {
-        RunRecording.Sample a = samples.get(from);
-        RunRecording.Sample b = samples.get(to);
-        double turn = wrapped(b.bearing() - a.bearing());
-        for (int i = from + 1; i < to; i++) {
-            RunRecording.Sample s = samples.get(i);
-            if (s.active() != a.active() || s.active() != b.active()) {
-                return false;
-            }
-            double f = (double) (i - from) / (to - from);
-            double x = a.x() + (b.x() - a.x()) * f;
-            double y = a.y() + (b.y() - a.y()) * f;
-            if (Math.hypot(s.x() - x, s.y() - y) > POSITION_TOLERANCE
-                    || Math.abs(wrapped(s.bearing() - (a.bearing() + turn * f))) > HEADING_TOLERANCE_DEGREES) {
-                return false;
+    /** A track's rear-axle poses and fronts in the ASAM frame, exact and as a vertex would write them. */
+    private static final class Track {
+        private final double rearAxleBehindFront;
+        private final boolean[] active;
+        private final double[] x;
+        private final double[] y;
+        private final double[] h;
+        private final double[] frontX;
+        private final double[] frontY;
+        private final long[] writtenX;
+        private final long[] writtenY;
+        private final long[] writtenH;
+
+        Track(List<RunRecording.Sample> samples, ScenarioParts.Kind kind) {
+            int n = samples.size();
+            rearAxleBehindFront = kind.rearAxleBehindFront();
+            active = new boolean[n];
+            frontX = new double[n];
+            frontY = new double[n];
+            x = new double[n];
+            y = new double[n];
+            h = new double[n];
+            writtenX = new long[n];
+            writtenY = new long[n];
+            writtenH = new long[n];
+            for (int i = 0; i < n; i++) {
+                RunRecording.Sample s = samples.get(i);
+                active[i] = s.active();
+                x[i] = AsamFrame.x(kind.rearAxleX(s.x(), s.bearing()));
+                y[i] = AsamFrame.y(kind.rearAxleY(s.y(), s.bearing()));
+                h[i] = AsamFrame.heading(s.bearing());
+                frontX[i] = AsamFrame.x(s.x());
+                frontY[i] = AsamFrame.y(s.y());
+                writtenX[i] = Math.round(x[i] / POSITION_UNIT);
+                writtenY[i] = Math.round(y[i] / POSITION_UNIT);
+                writtenH[i] = heading(h[i]);
             }
         }
-        return a.active() == b.active();
-    }
 
-    /** An angle difference in degrees, brought into [−180, 180). */
-    static double wrapped(double degrees) {
-        return ((degrees % 360) + 540) % 360 - 180;
+        /** A heading in whole units, kept in (−π, π] where rounding would carry it past π. */
+        private static long heading(double radians) {
+            long units = Math.round(radians / HEADING_UNIT);
+            if (units * HEADING_UNIT > Math.PI) {
+                units--;
+            } else if (units * HEADING_UNIT <= -Math.PI) {
+                units++;
+            }
+            return units;
+        }
+
+        Vertex vertex(int i) {
+            return new Vertex(i, writtenX[i], writtenY[i], writtenH[i]);
+        }
+
+        boolean spans(int from, int to) {
+            if (active[from] != active[to]) {
+                return false;
+            }
+            double ax = writtenX[from] * POSITION_UNIT;
+            double ay = writtenY[from] * POSITION_UNIT;
+            double ah = writtenH[from] * HEADING_UNIT;
+            double dx = writtenX[to] * POSITION_UNIT - ax;
+            double dy = writtenY[to] * POSITION_UNIT - ay;
+            double bh = writtenH[to] * HEADING_UNIT;
+            double turn = Math.IEEEremainder(bh - ah, 2 * Math.PI);
+            // the fronts the written vertices place, ahead of their rear axles
+            double afx = ax + Math.cos(ah) * rearAxleBehindFront;
+            double afy = ay + Math.sin(ah) * rearAxleBehindFront;
+            double dfx = ax + dx + Math.cos(bh) * rearAxleBehindFront - afx;
+            double dfy = ay + dy + Math.sin(bh) * rearAxleBehindFront - afy;
+            for (int i = from + 1; i < to; i++) {
+                double f = (double) (i - from) / (to - from);
+                if (active[i] != active[from]
+                        || Math.hypot(x[i] - (ax + dx * f), y[i] - (ay + dy * f)) > POSITION_TOLERANCE
+                        || Math.hypot(frontX[i] - (afx + dfx * f), frontY[i] - (afy + dfy * f)) > POSITION_TOLERANCE
+                        || Math.abs(Math.IEEEremainder(h[i] - (ah + turn * f), 2 * Math.PI)) > HEADING_TOLERANCE) {
+                    return false;
+                }
+            }
+            return true;
+        }
     }
 }

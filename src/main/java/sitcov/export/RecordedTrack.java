@@ -114,10 +114,10 @@ final class RecordedTrack {
         xml.open("Trajectory", "name", track.entity() + " from sample " + stretch.first(), "closed", "false");
         xml.open("Shape").open("Polyline");
         List<RunRecording.Sample> samples = track.samples().subList(stretch.first(), stretch.last() + 1);
-        for (int i : KeptVertices.of(samples)) {
-            RunRecording.Sample s = samples.get(i);
-            xml.startLine().open("Vertex", "time", Xml.seconds((stretch.first() + i) * Dimensions.TICK_SECONDS));
-            ScenarioParts.vehiclePose(xml, s.x(), s.y(), s.bearing(), kind);
+        for (KeptVertices.Vertex v : KeptVertices.of(samples, kind)) {
+            long tenths = Math.round((stretch.first() + v.sample()) * Dimensions.TICK_SECONDS * 10);
+            xml.startLine().open("Vertex", "time", Xml.decimal(tenths, 1));
+            v.position(xml);
             xml.close().endLine();
         }
         xml.close().close().close();

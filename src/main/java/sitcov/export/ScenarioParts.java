@@ -44,6 +44,16 @@ final class ScenarioParts {
         double centreAheadOfRearAxle() {
             return rearAxleBehindFront - length / 2;
         }
+
+        /** The rear axle's sitcov x when the front centre, where sitcov anchors vehicles, is at {@code frontX}. */
+        double rearAxleX(double frontX, double bearing) {
+            return frontX - Bearing.dx(bearing) * rearAxleBehindFront;
+        }
+
+        /** The rear axle's sitcov y when the front centre is at {@code frontY}. */
+        double rearAxleY(double frontY, double bearing) {
+            return frontY - Bearing.dy(bearing) * rearAxleBehindFront;
+        }
     }
 
     static void header(Xml xml, ScenarioVersion version, String description) {
@@ -104,8 +114,7 @@ final class ScenarioParts {
      * reference point OpenSCENARIO places vehicles by and players turn them about.
      */
     static void vehiclePose(Xml xml, double frontX, double frontY, double bearing, Kind kind) {
-        double back = kind.rearAxleBehindFront();
-        worldPose(xml, frontX - Bearing.dx(bearing) * back, frontY - Bearing.dy(bearing) * back, bearing);
+        worldPose(xml, kind.rearAxleX(frontX, bearing), kind.rearAxleY(frontY, bearing), bearing);
     }
 
     /** A parked car's world position from the centre of its footprint. */

@@ -54,7 +54,7 @@ final class RunCommand implements Command {
     @Override
     public String synopsis() {
         return "PRESET [--out DIR (default: target/results/PRESET-seedS)] [--seed MASTER] [--replications N] [--threads T] [--fork on|off]"
-                + " [--shard K/N] [--dry-run]\n"
+                + " [--shard K/N] [--record failures|all] [--dry-run]\n"
                 + "       " + Main.LAUNCHER + " run --resume DIR [--threads T] [--fork on|off]";
     }
 
@@ -66,7 +66,7 @@ final class RunCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--out", "--seed", "--replications", "--threads", "--fork", "--shard",
-                "--resume", "--controller", "--variants"), Set.of("--dry-run"));
+                "--resume", "--controller", "--variants", "--record"), Set.of("--dry-run"));
         int threads = options.threads(err);
         fork = options.forks();
         if (options.value("--resume").isPresent()) {
@@ -81,9 +81,9 @@ final class RunCommand implements Command {
         }
         Path presetFile = Preset.locate(options.positional().get(0));
         if (EstimatePreset.isEstimate(presetFile)) {
-            if (options.has("--variants") || options.has("--fork")) {
+            if (options.has("--variants") || options.has("--fork") || options.has("--record")) {
                 throw new UsageException("run: " + presetFile + " is an estimate (protocol=estimate), which takes neither"
-                        + " --variants nor --fork: drop them.");
+                        + " --variants, --fork nor --record: drop them.");
             }
             return EstimateCommand.start(presetFile, options, out, err);
         }
@@ -106,6 +106,7 @@ final class RunCommand implements Command {
     int start(ExperimentConfig config, Options options, String source, int threads, PrintStream out, PrintStream err)
             throws UsageException {
         Shard shard = shard(options, config);
+        boolean recordAll = options.recordsAll();
         if (options.has("--dry-run")) {
             if (options.has("--out")) {
                 folder(options, config, shard);
@@ -116,7 +117,7 @@ final class RunCommand implements Command {
             return ExitCode.OK;
         }
         Path folder = folder(options, config, shard);
-        Manifest manifest = new Manifest(config, Version.current(), shard, false, false);
+        Manifest manifest = new Manifest(config, Version.current(), shard, false, false).recordingAll(recordAll);
         // a controller program that cannot start is refused before a results folder is made for it
         Controllers.Opened controllers = Controllers.open(config, folder);
         Map<String, String> execution = execution(threads);
@@ -137,6 +138,10 @@ final class RunCommand implements Command {
         if (options.has("--shard")) {
             throw new UsageException("run: " + campaign.name() + " is a campaign, which runs whole; --shard splits the"
                     + " suites' replications: drop --shard.");
+        }
+        if (options.has("--record")) {
+            throw new UsageException("run: " + campaign.name() + " is a campaign, whose trials keep the recordings of"
+                    + " their failures only; --record all is for test suites (run, versions): drop --record.");
         }
         CampaignConfig c = campaign;
         if (options.has("--dry-run")) {
@@ -165,6 +170,10 @@ final class RunCommand implements Command {
         if (!options.positional().isEmpty() || options.has("--out") || options.has("--seed") || options.has("--shard")
                 || options.has("--replications")) {
             throw new UsageException("run: --resume DIR takes everything from DIR's manifest; give only --threads and --fork beside it.");
+        }
+        if (options.has("--record")) {
+            throw new UsageException("run: --resume DIR records as the run it resumes did (its manifest says which runs);"
+                    + " drop --record.");
         }
         Path folder = Path.of(options.value("--resume").get());
         if (folder.toString().isEmpty() || !Files.isDirectory(folder)) {
@@ -222,7 +231,8 @@ final class RunCommand implements Command {
         ProgressListener progress = new ProgressListener(err, err == System.err && System.console() != null,
                 System::nanoTime);
         ExperimentRunner runner = new ExperimentRunner(config, drivers, manifest.shard(), recorder.journal(), threads,
-                System::nanoTime, List.of(recorder, progress), controllers.reference(), controllers.variants());
+                System::nanoTime, List.of(recorder, progress), controllers.reference(), controllers.variants())
+                .recordingAll(manifest.recordsAll());
         err.println(plan(runner, config, manifest.shard(), threads) + ", into " + folder + note);
         try (controllers) {
             runner.run();

@@ -95,7 +95,8 @@ public final class ShardMerger {
         }
         // a shard written before checks leaves the merged folder without them: its rows were never checked
         boolean checked = manifests.stream().allMatch(Manifest::checked);
-        Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed, checked);
+        Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed, checked,
+                first.recordsAll());
         Files.createDirectories(out);
         try (FolderLock lock = FolderLock.claim(out)) {
             // checked under the lock: of two merges into one folder, the later finds the earlier's files

@@ -37,27 +37,42 @@ import sitcov.judge.FaultyRuns;
  * it is read, and written again, without them.
  */
 public record Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed,
-                       boolean checked) {
+                       boolean checked, boolean recordsAll) {
     private static final String HEADER = "# sitcov experiment manifest";
     static final String CHECKS = "checks";
     private static final String COMPLETE = "complete";
+    /** The key, present only as {@code recordings=all}, of a folder that keeps every run's recording ({@code --record all}). */
+    private static final String RECORDINGS = "recordings";
+    private static final String ALL = "all";
 
-    /** A manifest with checks, as every folder is written now. */
+    /** A manifest with checks, as every folder is written now, recording failures and findings only. */
     public Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed) {
-        this(config, version, shard, complete, resumed, true);
+        this(config, version, shard, complete, resumed, true, false);
+    }
+
+    /** A manifest recording failures and findings only. */
+    public Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed,
+                    boolean checked) {
+        this(config, version, shard, complete, resumed, checked, false);
     }
 
     public Manifest complete(boolean done) {
-        return new Manifest(config, version, shard, done, resumed, checked);
+        return new Manifest(config, version, shard, done, resumed, checked, recordsAll);
     }
 
     /** The same experiment, marked resumed when that changes its results (a wall-clock budget). */
     public Manifest resumedRun() {
-        return new Manifest(config, version, shard, complete, resumed || config.budget() == BudgetKind.WALL_CLOCK, checked);
+        return new Manifest(config, version, shard, complete, resumed || config.budget() == BudgetKind.WALL_CLOCK, checked,
+                recordsAll);
     }
 
     public Manifest whole() {
-        return new Manifest(config, version, Shard.WHOLE, complete, resumed, checked);
+        return new Manifest(config, version, Shard.WHOLE, complete, resumed, checked, recordsAll);
+    }
+
+    /** The same experiment keeping the recordings of every run, passing ones too ({@code all}), or of failures and findings only. */
+    public Manifest recordingAll(boolean all) {
+        return new Manifest(config, version, shard, complete, resumed, checked, all);
     }
 
     /** What to say of a folder written before checks, which is read as it is. */
@@ -76,7 +91,7 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
     /** The command that runs this experiment again into a new folder. */
     String rerun() {
         return "run " + config.name() + " --seed " + config.masterSeed() + " --replications " + config.replications()
-                + (shard.isWhole() ? "" : " --shard " + shard) + " --out NEW_FOLDER";
+                + (shard.isWhole() ? "" : " --shard " + shard) + (recordsAll ? " --record all" : "") + " --out NEW_FOLDER";
     }
 
     /** The keys that say which experiment this is: folders to merge must agree on all of them. */
@@ -109,6 +124,10 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         m.put("grid", ResultsFolder.GRID);
         m.put("grid_sha256", sha256(c.grid().format()));
         m.putAll(c.analysis().properties());
+        if (recordsAll) {
+            // absent otherwise, so that a folder recording failures only keeps the manifest it always had
+            m.put(RECORDINGS, ALL);
+        }
         return m;
     }
 
@@ -182,12 +201,21 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
             Shard shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
             return new Manifest(config, required(p, "sitcov_version"), shard,
                     Boolean.parseBoolean(required(p, COMPLETE)), Boolean.parseBoolean(p.getProperty("resumed", "false")),
-                    p.containsKey(CHECKS));
+                    p.containsKey(CHECKS), readRecordings(p));
         } catch (NoSuchFileException e) {
             throw new IllegalArgumentException(folder + " lacks " + e.getFile() + "; it is not a whole results folder");
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException(file + ": " + e.getMessage(), e);
         }
+    }
+
+    private static boolean readRecordings(Properties p) {
+        String value = p.getProperty(RECORDINGS);
+        if (value != null && !value.strip().equals(ALL)) {
+            throw new IllegalArgumentException(RECORDINGS + "=" + value + " is not a setting sitcov writes (only "
+                    + RECORDINGS + "=" + ALL + ")");
+        }
+        return value != null;
     }
 
     /**

@@ -124,10 +124,6 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         m.put("grid", ResultsFolder.GRID);
         m.put("grid_sha256", sha256(c.grid().format()));
         m.putAll(c.analysis().properties());
-        if (recordsAll) {
-            // absent otherwise, so that a folder recording failures only keeps the manifest it always had
-            m.put(RECORDINGS, ALL);
-        }
         return m;
     }
 
@@ -138,6 +134,11 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         }
         if (resumed) {
             m.put("resumed", "true");
+        }
+        if (recordsAll) {
+            // not of the identity: which runs are recorded changes no result, nor the checks of the journal's rows;
+            // absent otherwise, so that a folder recording failures only keeps the manifest it always had
+            m.put(RECORDINGS, ALL);
         }
         if (checked) {
             List<String> crcs = new ArrayList<>();

@@ -55,6 +55,10 @@ class RecordEveryRunTest {
             assertEquals(recorded.outcome(), run.outcome(), "row " + row.number() + " replays to its outcome");
             assertEquals(recorded.ticks(), run.ticks(), "row " + row.number() + " replays to its tick");
         }
+        for (String table : List.of(ResultsFolder.RUNS, ResultsFolder.DRIVERS, ResultsFolder.VERDICT)) {
+            org.junit.jupiter.api.Assertions.assertArrayEquals(Files.readAllBytes(failures.resolve(table)),
+                    Files.readAllBytes(all.resolve(table)), table + " is the same whichever runs are recorded");
+        }
         assertTrue(Files.readString(all.resolve(ResultsFolder.MANIFEST)).contains("\nrecordings=all\n"),
                 "the manifest says so, for a resume to record as the run did");
         assertFalse(Files.readString(failures.resolve(ResultsFolder.MANIFEST)).contains("recordings="));

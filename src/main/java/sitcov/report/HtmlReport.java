@@ -72,9 +72,10 @@ final class HtmlReport {
         if (java.nio.file.Files.exists(folder.resolve(ResultsFolder.OWN_FAILURES))) {
             ReportOwnFailures.append(h, CsvTable.read(folder.resolve(ResultsFolder.OWN_FAILURES)),
                     config.onBuiltinFaults());
-            ReportPictures.append(h, folder, pictures.of(java.util.Optional.empty()), "Replayed (the pictures are chosen"
-                    + " as <a href=\"#found\">Maps that found each fault</a> says):", p -> ReportPictures.where(p) + ": "
-                    + String.join("+", sitcov.analysis.OwnFailures.types(p.run()).stream().map(Enum::name).toList()));
+            ReportPictures.append(h, folder, pictures.of(java.util.Optional.empty()), "Replayed from their recorded"
+                    + " commands (which are pictured: under <a href=\"#found\">Maps that found each fault</a>):",
+                    p -> ReportPictures.where(p) + ": " + String.join("+",
+                            sitcov.analysis.OwnFailures.types(p.run()).stream().map(Enum::name).toList()));
         }
         h.append("<h2>Figures</h2><p class=\"muted\">each opens at full size</p>\n");
         for (String fig : figures(folder)) {

@@ -132,8 +132,13 @@ public record OwnFailures(List<Failure> failures, List<DriverRate> rates) {
         return ticks == 0 ? 0 : failures * 1e6 / ticks;
     }
 
+    /** Whether the map's reference run failed by itself: an accident, or its controller's failure. */
+    public static boolean failed(MapRun m) {
+        return !types(m).isEmpty();
+    }
+
     /** How the map's reference run failed: its accident types in type order, then its controller's failure if any. */
-    static List<sitcov.oracle.Failure> types(MapRun m) {
+    public static List<sitcov.oracle.Failure> types(MapRun m) {
         List<sitcov.oracle.Failure> types = new ArrayList<>();
         for (AccidentType t : AccidentType.values()) {
             if (m.faultFree().count(t) > 0) {

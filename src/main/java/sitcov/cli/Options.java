@@ -172,6 +172,22 @@ final class Options {
         throw new UsageException(command + ": --fork takes on or off, not '" + fork.get() + "'.");
     }
 
+    /**
+     * Whether a results folder keeps the recordings of every run ({@code --record all}) or, the default, of
+     * its failures and findings only ({@code --record failures}).
+     */
+    boolean recordsAll() throws UsageException {
+        Optional<String> record = value("--record");
+        if (record.isEmpty() || record.get().equals("failures")) {
+            return false;
+        }
+        if (record.get().equals("all")) {
+            return true;
+        }
+        throw new UsageException(command + ": --record takes failures (the default: failing runs and findings) or all"
+                + " (every run, passing ones too), not '" + record.get() + "'.");
+    }
+
     /** A file to read: it must exist and be a readable file. */
     Optional<Path> inputFile(String name) throws UsageException {
         Optional<Path> path = path(name);

@@ -54,9 +54,9 @@ final class RunCommand implements Command {
     @Override
     public String synopsis() {
         return "PRESET [--out DIR (default: target/results/PRESET-seedS)] [--seed MASTER] [--replications N] [--threads T] [--fork on|off]"
-                + " [--shard K/N] [--dry-run]\n"
+                + " [--shard K/N] [--record failures|all] [--dry-run]\n"
                 + "       " + Main.LAUNCHER + " run --resume DIR [--threads T] [--fork on|off]\n"
-                + "       " + Main.LAUNCHER + " run --again DIR [--out NEW] [--threads T] [--fork on|off] [--dry-run]";
+                + "       " + Main.LAUNCHER + " run --again DIR [--out NEW] [--threads T] [--fork on|off] [--record failures|all] [--dry-run]";
     }
 
     @Override
@@ -68,7 +68,7 @@ final class RunCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--out", "--seed", "--replications", "--threads", "--fork", "--shard",
-                "--resume", "--again", "--controller", "--variants"), Set.of("--dry-run"));
+                "--resume", "--again", "--controller", "--variants", "--record"), Set.of("--dry-run"));
         int threads = options.threads(err);
         fork = options.forks();
         if (options.value("--resume").isPresent()) {
@@ -86,9 +86,9 @@ final class RunCommand implements Command {
         }
         Path presetFile = Preset.locate(options.positional().get(0));
         if (EstimatePreset.isEstimate(presetFile)) {
-            if (options.has("--variants") || options.has("--fork")) {
+            if (options.has("--variants") || options.has("--fork") || options.has("--record")) {
                 throw new UsageException("run: " + presetFile + " is an estimate (protocol=estimate), which takes neither"
-                        + " --variants nor --fork: drop them.");
+                        + " --variants, --fork nor --record: drop them.");
             }
             return EstimateCommand.start(presetFile, options, out, err);
         }
@@ -115,6 +115,7 @@ final class RunCommand implements Command {
 
     private int start(ExperimentConfig config, Shard shard, Options options, String source, int threads, PrintStream out,
                       PrintStream err) throws UsageException {
+        boolean recordAll = options.recordsAll();
         if (options.has("--dry-run")) {
             if (options.has("--out")) {
                 folder(options, config, shard);
@@ -125,7 +126,7 @@ final class RunCommand implements Command {
             return ExitCode.OK;
         }
         Path folder = folder(options, config, shard);
-        Manifest manifest = new Manifest(config, Version.current(), shard, false, false);
+        Manifest manifest = new Manifest(config, Version.current(), shard, false, false).recordingAll(recordAll);
         // a controller program that cannot start is refused before a results folder is made for it
         Controllers.Opened controllers = Controllers.open(config, folder);
         Map<String, String> execution = execution(threads);
@@ -147,6 +148,10 @@ final class RunCommand implements Command {
             throw new UsageException("run: " + campaign.name() + " is a campaign, which runs whole; --shard splits the"
                     + " suites' replications: drop --shard.");
         }
+        if (options.has("--record")) {
+            throw new UsageException("run: " + campaign.name() + " is a campaign, whose trials keep the recordings of"
+                    + " their failures only; --record all is for test suites (run, versions): drop --record.");
+        }
         CampaignConfig c = campaign;
         if (options.has("--dry-run")) {
             out.println(CampaignRun.plan(c, threads) + ": sound; a dry run, so nothing ran and nothing was written.");
@@ -163,7 +168,7 @@ final class RunCommand implements Command {
     private int again(Options options, int threads, PrintStream out, PrintStream err) throws UsageException {
         if (!options.positional().isEmpty() || options.has("--resume") || options.has("--seed") || options.has("--shard")
                 || options.has("--replications") || options.has("--controller") || options.has("--variants")) {
-            throw new UsageException("run: --again DIR takes the experiment from DIR's manifest; give only --out, --threads,"
+            throw new UsageException("run: --again DIR takes the experiment from DIR's manifest; give only --out, --threads, --record,"
                     + " --fork and --dry-run beside it.");
         }
         Path folder = Path.of(options.value("--again").get());
@@ -207,6 +212,10 @@ final class RunCommand implements Command {
         if (!options.positional().isEmpty() || options.has("--out") || options.has("--seed") || options.has("--shard")
                 || options.has("--replications")) {
             throw new UsageException("run: --resume DIR takes everything from DIR's manifest; give only --threads and --fork beside it.");
+        }
+        if (options.has("--record")) {
+            throw new UsageException("run: --resume DIR records as the run it resumes did (its manifest says which runs);"
+                    + " drop --record.");
         }
         Path folder = Path.of(options.value("--resume").get());
         if (folder.toString().isEmpty() || !Files.isDirectory(folder)) {
@@ -264,7 +273,8 @@ final class RunCommand implements Command {
         ProgressListener progress = new ProgressListener(err, err == System.err && System.console() != null,
                 System::nanoTime);
         ExperimentRunner runner = new ExperimentRunner(config, drivers, manifest.shard(), recorder.journal(), threads,
-                System::nanoTime, List.of(recorder, progress), controllers.reference(), controllers.variants());
+                System::nanoTime, List.of(recorder, progress), controllers.reference(), controllers.variants())
+                .recordingAll(manifest.recordsAll());
         err.println(plan(runner, config, manifest.shard(), threads) + ", into " + folder + note);
         try (controllers) {
             runner.run();

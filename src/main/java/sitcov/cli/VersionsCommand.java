@@ -37,7 +37,7 @@ final class VersionsCommand implements Command {
 
     @Override
     public String synopsis() {
-        return "PRESET | --reference CONTROLLER --variants VARIANT[;VARIANT…]  [--maps N] [--seed S] [--threads T] [--fork on|off] [--out DIR]";
+        return "PRESET | --reference CONTROLLER --variants VARIANT[;VARIANT…]  [--maps N] [--seed S] [--threads T] [--fork on|off] [--record failures|all] [--out DIR]";
     }
 
     @Override
@@ -48,7 +48,7 @@ final class VersionsCommand implements Command {
     @Override
     public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
         Options options = Options.parse(name(), args, Set.of("--reference", "--variants", "--maps", "--seed", "--threads",
-                "--fork", "--out"), Set.of());
+                "--fork", "--out", "--record"), Set.of());
         int threads = options.threads(err);
         ExperimentConfig config = config(options);
         return new RunCommand(Drivers.standard()).forking(options.forks()).start(config, options, "versions " + config.name(),

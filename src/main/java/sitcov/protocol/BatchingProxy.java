@@ -253,6 +253,11 @@ public final class BatchingProxy implements ControllerBatch, AutoCloseable {
         }
 
         @Override
+        public java.util.Set<sitcov.control.Sensor> sensors() {
+            return session.hello() == null ? java.util.Set.of() : session.hello().sensors();
+        }
+
+        @Override
         public void observe(Observation observation) {
             if (session.isDead()) {
                 throw broken != null ? broken

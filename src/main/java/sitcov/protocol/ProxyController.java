@@ -41,14 +41,27 @@ final class ProxyController implements Controller {
     }
 
     @Override
+    public java.util.Set<sitcov.control.Sensor> sensors() {
+        return session.hello() == null ? java.util.Set.of() : session.hello().sensors();
+    }
+
+    @Override
     public void end(RunEnd how) {
         session.end(how);
     }
 
     /** A controller that could not be started: the run ends at its first tick with its reason. */
     static Controller failed(String why) {
-        return (now, out) -> {
-            throw new ControllerFailure(ControllerFailure.Kind.ERROR, why);
+        return new Controller() {
+            @Override
+            public void step(Observation now, Command out) {
+                throw new ControllerFailure(ControllerFailure.Kind.ERROR, why);
+            }
+
+            @Override
+            public java.util.Set<sitcov.control.Sensor> sensors() {
+                return java.util.Set.of(); // it never took an observation
+            }
         };
     }
 }

@@ -11,6 +11,7 @@ import sitcov.control.Observation;
 import sitcov.control.RightOfWay;
 import sitcov.control.RunEnd;
 import sitcov.control.SelfReport;
+import sitcov.control.Sensor;
 import sitcov.control.Vehicle;
 import sitcov.faults.Fault;
 import sitcov.faults.FaultSwitchboard;
@@ -38,9 +39,9 @@ final class Wire {
      * camera's marking hits and the LIDAR's raw hits. Leaner lines are read faster: a controller
      * that needs no sensor asks for none.
      */
-    static final List<String> SENSORS = List.of("radar", "obstacles", "camera", "lidar");
+    static final List<String> SENSORS = names(EnumSet.allOf(Sensor.class));
     /** What a controller that says nothing of sensors gets: the objects its sensors report, no raw hits. */
-    static final List<String> DEFAULT_SENSORS = List.of("radar", "obstacles");
+    static final List<String> DEFAULT_SENSORS = names(Sensor.reported());
     /** The most runs sitcov steps together for one controller process (its hello's "max_batch"). */
     static final int MAX_BATCH = 64;
 
@@ -60,6 +61,24 @@ final class Wire {
         Hello(int protocol, String name, String version, Set<Channel> channels, boolean radar, boolean obstacles,
               boolean camera, boolean lidar) {
             this(protocol, name, version, channels, radar, obstacles, camera, lidar, false);
+        }
+
+        /** The sensors it asked for: the parts of the observation sent to it. */
+        Set<Sensor> sensors() {
+            Set<Sensor> s = EnumSet.noneOf(Sensor.class);
+            if (radar) {
+                s.add(Sensor.RADAR);
+            }
+            if (obstacles) {
+                s.add(Sensor.OBSTACLES);
+            }
+            if (camera) {
+                s.add(Sensor.CAMERA);
+            }
+            if (lidar) {
+                s.add(Sensor.LIDAR);
+            }
+            return s;
         }
 
         /** Whether each command must echo its observation's tick (protocol 2 and later). */
@@ -219,6 +238,10 @@ final class Wire {
         return new Hello((int) protocol, name, version, channels, sensors.contains("radar"), sensors.contains("obstacles"),
                 sensors.contains("camera"), sensors.contains("lidar"), m.optionalFlag("faults"),
                 (int) Math.min(batch, MAX_BATCH));
+    }
+
+    private static List<String> names(Set<Sensor> sensors) {
+        return sensors.stream().map(Sensor::wireName).toList();
     }
 
     /** "1 and 2". */

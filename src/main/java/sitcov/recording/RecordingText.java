@@ -1,8 +1,11 @@
 package sitcov.recording;
 
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import sitcov.control.ControllerFailure;
+import sitcov.control.Sensor;
 import sitcov.geom.Compass;
 import sitcov.oracle.Outcome;
 import sitcov.vehicles.CommandLog;
@@ -25,7 +28,13 @@ final class RecordingText {
         quote(out, k.driver());
         out.append(",\"map_index\":").append(k.mapIndex()).append(",\"variant\":").append(k.variant())
                 .append(",\"external_seed\":").append(r.externalSeed()).append(",\"internal_seed\":").append(r.internalSeed())
-                .append(",\"outcome\":\"").append(r.outcome().name()).append("\",\"ticks\":").append(r.ticks()).append("}\n");
+                .append(",\"outcome\":\"").append(r.outcome().name()).append("\",\"ticks\":").append(r.ticks())
+                .append(",\"sensors\":[");
+        int written = 0;
+        for (Sensor sensor : log.sensors()) {
+            out.append(written++ == 0 ? "" : ",").append('"').append(sensor.wireName()).append('"');
+        }
+        out.append("]}\n");
         int clamp = 0;
         int request = 0;
         int report = 0;
@@ -137,6 +146,9 @@ final class RecordingText {
                     (String) h.get("driver"), (int) number(h, "map_index", source, 1), (int) number(h, "variant", source, 1));
             Outcome outcome = Outcome.valueOf((String) h.get("outcome"));
             CommandLog log = new CommandLog();
+            if (h.containsKey("sensors")) {
+                log.sensors(sensors(h.get("sensors"), source));
+            } // a recording written before sensors were recorded: its log keeps what a program takes by default
             for (int i = 1; i < n; i++) {
                 tick(log, object(lines[i], source, i + 1), source, i + 1);
             }
@@ -175,6 +187,18 @@ final class RecordingText {
         if (m.get("asked") instanceof List<?> asked) {
             log.clamped(real(asked.get(0)), real(asked.get(1)));
         }
+    }
+
+    private static Set<Sensor> sensors(Object listed, String source) {
+        Set<Sensor> sensors = EnumSet.noneOf(Sensor.class);
+        if (!(listed instanceof List<?> names)) {
+            throw malformed(source, 1, "'sensors' is not a list");
+        }
+        for (Object name : names) {
+            sensors.add(Sensor.ofWireName(String.valueOf(name)).orElseThrow(() -> malformed(source, 1, "'sensors' names "
+                    + name + ", which is not a sensor")));
+        }
+        return sensors;
     }
 
     private static List<?> list(Object o) {

@@ -4,8 +4,8 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import sitcov.control.ControllerFactory;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapRun;
@@ -13,14 +13,14 @@ import sitcov.faults.Fault;
 import sitcov.judge.FaultVerdict;
 import sitcov.judge.JudgedMap;
 import sitcov.judge.MapRunner;
-import sitcov.judge.Notion;
 import sitcov.judge.Variant;
 import sitcov.results.ResultsFolder;
 import sitcov.results.ResultsRows;
 
 /**
- * The replay picture of the first map that found each fault, for the report: {@code replays/fault-N.png}
- * (a bounded number: one a fault, so a large experiment's report stays quick to write and to open).
+ * The report's pictures of failures and findings, in {@code replays/}: a reference's own failure alone,
+ * a variant's finding beside the reference's run of the same map. Which rows are drawn is the report's
+ * choice; each is drawn from the folder's recordings, so no controller runs.
  */
 public final class ReplayGallery {
     private static final int PIXELS_PER_METRE = 4;
@@ -28,76 +28,70 @@ public final class ReplayGallery {
     private ReplayGallery() {
     }
 
-    public static Path picture(Path folder, Variant variant) {
-        return folder.resolve(ResultsFolder.REPLAYS).resolve("fault-" + variant.id() + ".png");
+    /**
+     * A row to draw: its number in runs.csv, its map, its variant (empty for the reference's own failure),
+     * and whether it is its variant's first finding (drawn as {@code fault-ID.png}, as reports always named it;
+     * every other picture is {@code row-N.png}).
+     */
+    public record Pictured(int row, MapRun run, Optional<Variant> variant, boolean first) {
+        /** Its file, relative to the results folder, with {@code /} between the parts (as a page links it). */
+        public String name() {
+            return ResultsFolder.REPLAYS + "/" + (first ? "fault-" + variant.orElseThrow().id() : "row-" + row) + ".png";
+        }
+
+        public Path file(Path folder) {
+            return folder.resolve(name());
+        }
     }
 
     /**
-     * Draws the pictures: in a folder of the builtin car, its runs made again by {@code builtin}; in a
-     * folder of any other controller, its runs replayed from their recordings (no controller runs).
+     * Draws the pictures: a seeded fault of the builtin car by the builtin car ({@code builtin}) run again to the
+     * end of the faulty run (its recording ends where the experiment stopped it); every other row, of any
+     * controller, replayed from its recordings. A row without recordings (a folder written before them) is
+     * not drawn.
      */
-    public static void write(Path folder, ExperimentConfig config, List<MapRun> inOrder, ControllerFactory builtin)
+    public static void write(Path folder, ExperimentConfig config, List<Pictured> rows, ControllerFactory builtin)
             throws IOException {
         boolean builtinCar = config.controller().equals(ExperimentConfig.BUILTIN);
-        List<Variant> faults = config.variants();
-        int perMap = 1 + faults.size();
-        List<Runnable> pictures = new ArrayList<>();
-        for (int f = 0; f < faults.size(); f++) {
-            for (int m = 0; m < inOrder.size(); m++) {
-                MapRun run = inOrder.get(m);
-                if (!run.faults().get(f).found(Notion.DIFFERENTIAL)) {
-                    continue;
-                }
-                Variant variant = faults.get(f);
-                int row = m * perMap + f + 2;
-                if (builtinCar && variant instanceof Variant.Seeded seeded) {
-                    pictures.add(() -> unchecked(() -> draw(folder, config, run, seeded.fault(), builtin)));
-                } else {
-                    pictures.add(() -> unchecked(() -> drawRecorded(folder, variant, row)));
-                }
-                break;
-            }
-        }
         // each picture is its own file, judged and drawn alone: drawing them side by side changes no byte
         try {
-            pictures.parallelStream().forEach(Runnable::run);
+            rows.parallelStream().forEach(p -> {
+                try {
+                    if (builtinCar && p.variant().orElse(null) instanceof Variant.Seeded seeded) {
+                        draw(folder, config, p, seeded.fault(), builtin);
+                    } else {
+                        drawRecorded(folder, p);
+                    }
+                } catch (IOException e) {
+                    throw new UncheckedIOException(e);
+                }
+            });
         } catch (UncheckedIOException e) {
             throw e.getCause();
         }
     }
 
-    private interface Drawing {
-        void draw() throws IOException;
-    }
-
-    private static void unchecked(Drawing d) {
-        try {
-            d.draw();
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
-
-    /** The picture of row {@code row}, its variant beside the reference, replayed from the folder's recordings. */
-    private static void drawRecorded(Path folder, Variant variant, int row) throws IOException {
-        ResultsRows.Row r = ResultsRows.row(folder, row);
+    /** The row replayed from the folder's recordings: the reference's run alone, or beside it the variant's. */
+    private static void drawRecorded(Path folder, Pictured p) throws IOException {
+        ResultsRows.Row r = ResultsRows.row(folder, p.row());
         var drawn = RowReplay.of(folder, r, ResultsRows.worldMap(folder, r.map()), PIXELS_PER_METRE, Integer.MAX_VALUE);
-        if (drawn.isEmpty()) {
-            return; // a folder written before recordings: its runs cannot be made again here
+        if (drawn.isPresent()) {
+            write(drawn.get().picture(), p.file(folder));
         }
-        Path file = picture(folder, variant);
-        Files.createDirectories(file.getParent());
-        MapRenderer.writeAtomically(drawn.get().picture(), file);
     }
 
-    private static void draw(Path folder, ExperimentConfig config, MapRun run, Fault fault, ControllerFactory builtin)
+    private static void draw(Path folder, ExperimentConfig config, Pictured p, Fault fault, ControllerFactory builtin)
             throws IOException {
+        MapRun run = p.run();
         var map = ResultsRows.worldMap(folder, run);
         JudgedMap judged = MapRunner.judge(map, run.internalSeed(), List.of(fault), config.faultyRuns(), builtin);
         FaultVerdict verdict = judged.verdicts().get(0);
-        Path file = picture(folder, new Variant.Seeded(fault));
+        write(new ReplayPicture(PIXELS_PER_METRE).render(map, run.internalSeed(), verdict, config.faultyRuns(), builtin),
+                p.file(folder));
+    }
+
+    private static void write(java.awt.image.BufferedImage picture, Path file) throws IOException {
         Files.createDirectories(file.getParent());
-        MapRenderer.writeAtomically(new ReplayPicture(PIXELS_PER_METRE).render(map, run.internalSeed(), verdict,
-                config.faultyRuns(), builtin), file);
+        MapRenderer.writeAtomically(picture, file);
     }
 }

@@ -82,6 +82,28 @@ public final class ReplayPicture {
         return image;
     }
 
+    /** One run alone under a title and a line beneath it, as a pair is drawn. */
+    public BufferedImage render(WorldMap map, Side run, String title, String line) {
+        BufferedImage alone = new RunRenderer(scale).render(map, run.trajectory(), run.result());
+        BufferedImage image = new BufferedImage(alone.getWidth(), TITLE + alone.getHeight(), BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            g.setColor(MapStyle.CAPTION);
+            g.fillRect(0, 0, image.getWidth(), TITLE);
+            g.drawImage(alone, 0, TITLE, null);
+            g.setColor(MapStyle.TEXT);
+            g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 18));
+            g.drawString(title, 12, 26);
+            g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 14));
+            g.drawString(line, 12, 50);
+        } finally {
+            g.dispose();
+        }
+        return image;
+    }
+
     /**
      * The faulty side's marks, drawn by {@link RunRenderer} so that their labels and the run's share
      * one placer: a ring where the fault first acted, and the first new accident singled out.

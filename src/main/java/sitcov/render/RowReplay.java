@@ -49,8 +49,10 @@ public final class RowReplay {
         FolderRecordings.Replayed runs = replayed.get();
         var base = runs.reference().result();
         if (runs.variant().isEmpty()) {
-            RunRenderer renderer = new RunRenderer(pixelsPerMetre);
-            return Optional.of(new Drawn(renderer.render(map, basePath, base), List.of(new ReplayAnimation.Side(
+            BufferedImage alone = new ReplayPicture(pixelsPerMetre).render(map, new ReplayPicture.Side(basePath, base),
+                    "the reference's run, replayed from its recorded commands",
+                    OutcomeText.of(base.outcome(), base.ticks(), base.accidents()));
+            return Optional.of(new Drawn(alone, List.of(new ReplayAnimation.Side(
                     "the reference's run", basePath, baseFrames.frames(), base, Optional.empty(), Optional.empty())),
                     Optional.empty(), runs));
         }

@@ -32,6 +32,8 @@ final class HtmlReport {
             .verdict li{margin:.3em 0}.slices{display:flex;flex-wrap:wrap;gap:.8em}
             table.grid{font-size:.75em}table.grid td{min-width:2em;text-align:center}table.grid th{font-weight:400}
             .muted{color:#666}details{margin:.5em 0}summary{cursor:pointer;color:#245}
+            .shots{display:grid;grid-template-columns:repeat(auto-fill,minmax(480px,1fr));gap:.6em}\
+            .shots figure{margin:0}.shots figcaption{font-size:.85em;color:#555}
             @media (max-width:640px){table.stack,table.stack tbody,table.stack tr,table.stack td{display:block}\
             table.stack thead{display:none}table.stack caption{display:block}table.stack tr{border:1px solid #ccc;margin:.5em 0}\
             table.stack td{border:none;border-bottom:1px solid #eee;text-align:left;white-space:normal}\
@@ -45,7 +47,8 @@ final class HtmlReport {
     private HtmlReport() {
     }
 
-    static String html(Path folder, ExperimentConfig config, List<MapRun> inOrder) throws IOException {
+    static String html(Path folder, ExperimentConfig config, List<MapRun> inOrder, ReportPictures pictures)
+            throws IOException {
         StringBuilder h = new StringBuilder();
         h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">")
                 .append("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">")
@@ -69,6 +72,10 @@ final class HtmlReport {
         if (java.nio.file.Files.exists(folder.resolve(ResultsFolder.OWN_FAILURES))) {
             ReportOwnFailures.append(h, CsvTable.read(folder.resolve(ResultsFolder.OWN_FAILURES)),
                     config.onBuiltinFaults());
+            ReportPictures.append(h, folder, pictures.of(java.util.Optional.empty()), "Replayed from their recorded"
+                    + " commands (which are pictured: under <a href=\"#found\">Maps that found each fault</a>):",
+                    p -> ReportPictures.where(p) + ": " + String.join("+",
+                            sitcov.analysis.OwnFailures.types(p.run()).stream().map(Enum::name).toList()));
         }
         h.append("<h2>Figures</h2><p class=\"muted\">each opens at full size</p>\n");
         for (String fig : figures(folder)) {
@@ -76,7 +83,7 @@ final class HtmlReport {
                     .append(esc(fig)).append("\"></a></p>\n");
         }
         ReportGrid.append(h, config.grid(), config.drivers(), inOrder);
-        ReportFaultMaps.append(h, folder, config, inOrder, version(folder));
+        ReportFaultMaps.append(h, folder, config, inOrder, version(folder), pictures);
         ReportFaultTables.uniformity(h, CsvTable.read(folder.resolve(ResultsFolder.UNIFORMITY)));
         h.append("<p class=\"muted\">Every table above is a CSV file in this folder; runs.csv has one row per"
                 + " simulated run.</p></body></html>\n");

@@ -5,18 +5,18 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.MapId;
 import sitcov.experiment.MapRun;
 import sitcov.judge.Variant;
 import sitcov.judge.Notion;
-import sitcov.render.ReplayGallery;
 import sitcov.recording.Recording;
 import sitcov.results.ResultsFolder;
 
 /**
  * For each fault, the first maps that found it, each with its row of runs.csv and a replay command
- * that runs as printed from this folder, and the replay picture of the first.
+ * that runs as printed from this folder, and the pictures the report drew of them ({@link ReportPictures}).
  */
 final class ReportFaultMaps {
     /** Maps listed per fault; the rest are in runs.csv. */
@@ -54,10 +54,11 @@ final class ReportFaultMaps {
                 run.driver(), run.mapIndex(), Recording.RunKey.REFERENCE).fileName()));
     }
 
-    static void append(StringBuilder h, Path folder, ExperimentConfig config, List<MapRun> inOrder, String version) {
+    static void append(StringBuilder h, Path folder, ExperimentConfig config, List<MapRun> inOrder, String version,
+                       ReportPictures pictures) {
         boolean builtin = config.controller().equals(ExperimentConfig.BUILTIN);
         boolean replayed = !builtin && inOrder.stream().anyMatch(run -> recorded(folder, run, Recording.RunKey.REFERENCE));
-        h.append("<h2>Maps that found each fault</h2><p class=\"muted\">Counts are of maps judged: every map each driver"
+        h.append("<h2 id=\"found\">Maps that found each fault</h2><p class=\"muted\">Counts are of maps judged: every map each driver"
                 + " ran in each replication (runs.csv). Each command replays its row side by side, the run without the"
                 + " fault and the run with it, into a picture next to this page (add <code>--gif FILE</code> to watch"
                 + " them). Run it in a shell opened in this folder, once ").append(JAR).append(" names sitcov's jar: in"
@@ -67,7 +68,7 @@ final class ReportFaultMaps {
                 + " its runs carried out, kept in " + ResultsFolder.RECORDINGS + "/, so the controller need not be at hand."
                 : " This folder tested the controller " + HtmlReport.esc(config.controller()) + ", not the builtin car that"
                 + " replay runs: each command runs the map with the fault through that controller into a picture instead.")
-                .append("</p>");
+                .append("</p><p class=\"muted\">").append(pictures.rule(builtin)).append("</p>");
         var faults = config.variants();
         int perMap = 1 + faults.size();
         for (int f = 0; f < faults.size(); f++) {
@@ -95,13 +96,11 @@ final class ReportFaultMaps {
             if (!found.isEmpty()) {
                 h.append("<ul class=\"maps\">").append(String.join("", found)).append("</ul>");
             }
-            Path picture = ReplayGallery.picture(folder, faults.get(f));
-            if (Files.isRegularFile(picture)) {
-                String name = ResultsFolder.REPLAYS + "/" + picture.getFileName();
-                h.append("<p>The first of them, replayed (left without the fault, right with it):<br><a href=\"").append(name)
-                        .append("\"><img src=\"").append(name).append("\" alt=\"replay of the first map that found fault ")
-                        .append(faults.get(f).id()).append("\"></a></p>");
-            }
+            Variant variant = faults.get(f);
+            ReportPictures.append(h, folder, pictures.of(Optional.of(variant)), "Replayed (left "
+                    + (variant instanceof Variant.Seeded ? "without the fault, right with it" : "the reference, right the variant")
+                    + "):", p -> ReportPictures.where(p) + ": " + p.run().faults().get(faults.indexOf(variant)).newAccident()
+                    .map(a -> "FOUND by " + a).orElse("FOUND"));
         }
     }
 }

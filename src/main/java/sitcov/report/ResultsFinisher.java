@@ -108,8 +108,9 @@ public final class ResultsFinisher {
             ExperimentFigures.writeAll(config, summary, journal, folder);
             AnalysisFiles.write(config, summary, folder);
             List<MapRun> inOrder = JournalFiles.inOrder(config, journal).stream().map(Journal.Entry::run).toList();
-            ReplayGallery.write(folder, config, inOrder, builtin);
-            OutputFile.writeString(folder.resolve(ResultsFolder.REPORT), HtmlReport.html(folder, config, inOrder));
+            ReportPictures pictures = ReportPictures.of(config.variants(), inOrder);
+            ReplayGallery.write(folder, config, pictures.drawn(), builtin);
+            OutputFile.writeString(folder.resolve(ResultsFolder.REPORT), HtmlReport.html(folder, config, inOrder, pictures));
         }
         return summary;
     }

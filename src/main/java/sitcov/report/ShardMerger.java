@@ -95,7 +95,9 @@ public final class ShardMerger {
         }
         // a shard written before checks leaves the merged folder without them: its rows were never checked
         boolean checked = manifests.stream().allMatch(Manifest::checked);
-        Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed, checked);
+        // recordings=all only where every shard kept every run: another's passing runs are not at hand
+        Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed, checked,
+                manifests.stream().allMatch(Manifest::recordsAll));
         Files.createDirectories(out);
         try (FolderLock lock = FolderLock.claim(out)) {
             // checked under the lock: of two merges into one folder, the later finds the earlier's files

@@ -36,27 +36,42 @@ import sitcov.judge.FaultyRuns;
  * it is read, and written again, without them.
  */
 public record Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed,
-                       boolean checked) {
+                       boolean checked, boolean recordsAll) {
     private static final String HEADER = "# sitcov experiment manifest";
     static final String CHECKS = ManifestChecks.CHECKS;
     private static final String COMPLETE = ManifestChecks.COMPLETE;
+    /** The key, present only as {@code recordings=all}, of a folder that keeps every run's recording ({@code --record all}). */
+    private static final String RECORDINGS = "recordings";
+    private static final String ALL = "all";
 
-    /** A manifest with checks, as every folder is written now. */
+    /** A manifest with checks, as every folder is written now, recording failures and findings only. */
     public Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed) {
-        this(config, version, shard, complete, resumed, true);
+        this(config, version, shard, complete, resumed, true, false);
+    }
+
+    /** A manifest recording failures and findings only. */
+    public Manifest(ExperimentConfig config, String version, Shard shard, boolean complete, boolean resumed,
+                    boolean checked) {
+        this(config, version, shard, complete, resumed, checked, false);
     }
 
     public Manifest complete(boolean done) {
-        return new Manifest(config, version, shard, done, resumed, checked);
+        return new Manifest(config, version, shard, done, resumed, checked, recordsAll);
     }
 
     /** The same experiment, marked resumed when that changes its results (a wall-clock budget). */
     public Manifest resumedRun() {
-        return new Manifest(config, version, shard, complete, resumed || config.budget() == BudgetKind.WALL_CLOCK, checked);
+        return new Manifest(config, version, shard, complete, resumed || config.budget() == BudgetKind.WALL_CLOCK, checked,
+                recordsAll);
     }
 
     public Manifest whole() {
-        return new Manifest(config, version, Shard.WHOLE, complete, resumed, checked);
+        return new Manifest(config, version, Shard.WHOLE, complete, resumed, checked, recordsAll);
+    }
+
+    /** The same experiment keeping the recordings of every run, passing ones too ({@code all}), or of failures and findings only. */
+    public Manifest recordingAll(boolean all) {
+        return new Manifest(config, version, shard, complete, resumed, checked, all);
     }
 
     /** What to say of a folder written before checks, which is read as it is. */
@@ -82,7 +97,7 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         Path parent = f.getParent() != null ? f.getParent() : Path.of(f.toString().isEmpty() ? ".." : ".");
         Path name = folder.toAbsolutePath().normalize().getFileName();
         boolean sub = name != null && CampaignManifest.isCampaign(parent) && config.name().endsWith("-" + name);
-        return again(sub ? parent : f);
+        return again(sub ? parent : f) + (recordsAll ? " --record all" : "");
     }
 
     /** The command that runs the experiment or campaign of {@code folder} again into a new folder. */
@@ -130,6 +145,11 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         }
         if (resumed) {
             m.put("resumed", "true");
+        }
+        if (recordsAll) {
+            // not of the identity: which runs are recorded changes no result, nor the checks of the journal's rows;
+            // absent otherwise, so that a folder recording failures only keeps the manifest it always had
+            m.put(RECORDINGS, ALL);
         }
         return ManifestChecks.lines(HEADER, m, checked, complete);
     }
@@ -184,12 +204,21 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
             Shard shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
             return new Manifest(config, required(p, "sitcov_version"), shard,
                     Boolean.parseBoolean(required(p, COMPLETE)), Boolean.parseBoolean(p.getProperty("resumed", "false")),
-                    p.containsKey(CHECKS));
+                    p.containsKey(CHECKS), readRecordings(p));
         } catch (NoSuchFileException e) {
             throw new IllegalArgumentException(folder + " lacks " + e.getFile() + "; it is not a whole results folder");
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException(file + ": " + e.getMessage(), e);
         }
+    }
+
+    private static boolean readRecordings(Properties p) {
+        String value = p.getProperty(RECORDINGS);
+        if (value != null && !value.strip().equals(ALL)) {
+            throw new IllegalArgumentException(RECORDINGS + "=" + value + " is not a setting sitcov writes (only "
+                    + RECORDINGS + "=" + ALL + ")");
+        }
+        return value != null;
     }
 
     private static String required(Properties p, String key) {

@@ -69,6 +69,11 @@ final class SeamController implements Controller {
     }
 
     @Override
+    public java.util.Set<sitcov.control.Sensor> sensors() {
+        return reference.sensors();
+    }
+
+    @Override
     public void end(RunEnd how) {
         reference.end(how);
     }

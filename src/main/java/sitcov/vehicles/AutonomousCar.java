@@ -56,6 +56,12 @@ public final class AutonomousCar implements Bodied, Steppable {
         this.controller = controller;
         this.observation = new SceneObservation(scene, this);
         this.arrival = new TargetArrival(scene.target());
+        log.sensors(controller.sensors());
+    }
+
+    /** The sensors its controller takes. */
+    java.util.Set<sitcov.control.Sensor> sensors() {
+        return log.sensors();
     }
 
     @Override

@@ -52,6 +52,8 @@ public final class CommandLog {
     private int[] reportTick = new int[8];
     private Report[] report = new Report[8];
     private int failedAt = -1;
+    /** The sensors its controller took ({@link sitcov.control.Sensor#bits}); what a program takes by default until told. */
+    private int sensors = sitcov.control.Sensor.bits(sitcov.control.Sensor.reported());
     private ControllerFailure.Kind failureKind;
     private String failureMessage;
 
@@ -81,6 +83,15 @@ public final class CommandLog {
     }
 
     /** The ticks logged: each one a command, or the failure that ended the run. */
+    /** The sensors the run's controller took: what a viewer draws of its observation. Not a command: equality ignores it. */
+    public java.util.Set<sitcov.control.Sensor> sensors() {
+        return sitcov.control.Sensor.of(sensors);
+    }
+
+    public void sensors(java.util.Set<sitcov.control.Sensor> taken) {
+        sensors = sitcov.control.Sensor.bits(taken);
+    }
+
     public int ticks() {
         return ticks;
     }

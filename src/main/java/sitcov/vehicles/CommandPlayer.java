@@ -40,6 +40,12 @@ public final class CommandPlayer implements Controller {
         };
     }
 
+    /** The sensors the recorded run's controller took: a replay's observation is the recorded run's. */
+    @Override
+    public java.util.Set<sitcov.control.Sensor> sensors() {
+        return log.sensors();
+    }
+
     @Override
     public void step(Observation now, Command out) {
         int k = tick++;

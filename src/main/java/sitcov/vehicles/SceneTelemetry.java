@@ -73,6 +73,11 @@ final class SceneTelemetry implements Telemetry {
     }
 
     @Override
+    public java.util.Set<sitcov.control.Sensor> sensors() {
+        return scene.autonomousCar().sensors();
+    }
+
+    @Override
     public SelfReport selfReport() {
         return scene.autonomousCar().selfReport();
     }

@@ -50,6 +50,9 @@ public interface Telemetry {
      */
     Observation observation();
 
+    /** The sensors whose parts of {@link #observation} the car's controller takes (a replay: the recorded run's). */
+    java.util.Set<sitcov.control.Sensor> sensors();
+
     /** What the controller said of itself this tick: kept for people, never judged by. */
     SelfReport selfReport();
 

@@ -13,11 +13,15 @@ import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import sitcov.control.Observation;
 import sitcov.control.SelfReport;
+import sitcov.control.Sensor;
 import sitcov.control.Vehicle;
 import sitcov.geom.Bearing;
+import sitcov.geom.Box;
 import sitcov.geom.Compass;
+import sitcov.world.Dimensions;
 import sitcov.judge.LiveRun;
 import sitcov.judge.RunHistory;
 import sitcov.oracle.Accident;
@@ -30,10 +34,16 @@ import sitcov.render.NearMissText;
 import sitcov.render.OutcomeText;
 
 /**
- * Paints one live run as it stands: the map (drawn once), the car's sensors (the camera's 90° fan to
- * 10 m with the samples where its rays met markings; the LIDAR's half disc to 25 m with the rays of
- * its last sweep that hit something), every vehicle, each accident where it happened, and a header
- * with the car's state and how close the run has come to each accident so far (its near misses). It only reads the run: the model never knows it is watched.
+ * Paints one live run as it stands: the map (drawn once), every vehicle, what the car's controller
+ * observed this tick, each accident where it happened, and a header with the car's state and how close
+ * the run has come to each accident so far (its near misses). What it observed is the observation the
+ * seam hands any controller, as far as the controller took it ({@link sitcov.control.Sensor}): the radar
+ * tracks (an orange dot at each tracked vehicle's front, a line to where it will be in a second), the
+ * LIDAR's obstacles (parked cars outlined in orange), the camera's 90° fan to 10 m with the samples where
+ * its rays met markings, the LIDAR's half disc to 25 m with the rays of its sweep that hit something. A
+ * run replayed from its recorded commands is the recorded run, so its observation is the one its
+ * controller was handed (before any seam fault changed it). It only reads the run: the model never
+ * knows it is watched.
  */
 public final class RunPainter {
     static final int HEADER = 74;
@@ -44,6 +54,8 @@ public final class RunPainter {
     private static final Color CAMERA = new Color(255, 230, 80, 70);
     private static final Color LIDAR = new Color(255, 255, 255, 150);
     static final Color CAMERA_HIT = new Color(0xFFD400);
+    /** The radar's tracks and the LIDAR's obstacles: what the controller was told of other cars. */
+    static final Color SENSED = new Color(0xFF6D00);
     private static final double CAMERA_RANGE = 10;
     private static final double LIDAR_RANGE = 25;
 
@@ -97,13 +109,18 @@ public final class RunPainter {
         g.translate(0, HEADER);
         g.scale(scale, scale);
         Vehicle car = run().telemetry().car();
-        sensors(g, car, run().telemetry().observation());
+        Set<Sensor> taken = run().telemetry().sensors();
+        Observation sees = run().telemetry().observation();
+        sensors(g, car, sees, taken);
         for (Vehicle v : run().telemetry().movingCars()) {
             if (v.isActive()) {
                 body(g, v, MOVING);
             }
         }
         body(g, car, CAR);
+        if (run().tick() >= 0) { // before its first tick the car has observed nothing
+            reported(g, sees, taken);
+        }
         g.setTransform(saved);
         accidents(g, run().detector().accidents());
         g.setClip(clip);
@@ -113,6 +130,13 @@ public final class RunPainter {
         g.setColor(Color.BLACK);
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 14));
         g.drawString(title, 8, 18);
+        int after = 8 + g.getFontMetrics().stringWidth(title) + 12;
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        g.setColor(SENSED.darker());
+        String observed = observed();
+        if (after + g.getFontMetrics().stringWidth(observed) <= base.getWidth() - 8) {
+            g.drawString(observed, after, 18);
+        }
         boolean ended = run().detector().outcome() != null;
         List<Accident> accidents = run().detector().accidents();
         g.setColor(!ended ? Color.BLACK : accidents.isEmpty() ? REACHED : ACCIDENT);
@@ -164,6 +188,34 @@ public final class RunPainter {
         g.drawString(text, 8, baseline);
     }
 
+    /** What the controller's observation carried this tick, by the sensors it took. */
+    String observed() {
+        Set<Sensor> taken = run().telemetry().sensors();
+        if (taken.isEmpty()) {
+            return "observes no sensor (pose, map, Target, signals)";
+        }
+        List<String> parts = new java.util.ArrayList<>();
+        boolean started = run().tick() >= 0;
+        Observation sees = run().telemetry().observation();
+        if (taken.contains(Sensor.RADAR)) {
+            parts.add(started ? count(sees.traffic().size(), "radar track") : "radar tracks");
+        }
+        if (taken.contains(Sensor.OBSTACLES)) {
+            parts.add(started ? count(sees.obstacles().size(), "obstacle") : "obstacles");
+        }
+        if (taken.contains(Sensor.CAMERA)) {
+            parts.add("camera");
+        }
+        if (taken.contains(Sensor.LIDAR)) {
+            parts.add("LIDAR");
+        }
+        return "observes " + String.join(" · ", parts);
+    }
+
+    private static String count(int n, String thing) {
+        return n + " " + thing + (n == 1 ? "" : "s");
+    }
+
     /** The header's second line: the car's state while the run goes on, how it ended once it has. */
     String status() {
         if (run().detector().outcome() != null) {
@@ -184,20 +236,27 @@ public final class RunPainter {
 
     /**
      * The standard camera's reach (shaded fan) and the samples where its rays meet a marking (yellow
-     * dots); the standard LIDAR's reach (outlined half disc) and the rays of its sweep that hit
-     * something: the sensors the world offers every controller, as they see from where the car stands.
-     * A controller that works from its own processing of them (the builtin car's degraded camera
-     * under a camera fault) may have seen otherwise.
+     * dots), and the standard LIDAR's reach (outlined half disc) and the rays of its sweep that hit
+     * something, each where the controller took it: as the world offers them from where the car stands.
+     * A controller that works from its own processing of them (the builtin car's degraded camera under
+     * a camera fault) may have seen otherwise.
      */
-    private void sensors(Graphics2D g, Vehicle body, Observation sees) {
-        g.setColor(CAMERA);
-        g.fill(fan(body.x(), body.y(), body.heading(), 45, CAMERA_RANGE));
-        g.setColor(LIDAR);
-        g.setStroke(new BasicStroke(1.5f / scale));
-        g.draw(fan(body.x(), body.y(), body.heading(), 90, LIDAR_RANGE));
-        g.setStroke(new BasicStroke(0.8f / scale));
-        for (int h = 0; h < sees.lidarHits(); h++) {
-            g.draw(new java.awt.geom.Line2D.Double(body.x(), body.y(), sees.lidarHitX(h), sees.lidarHitY(h)));
+    private void sensors(Graphics2D g, Vehicle body, Observation sees, Set<Sensor> taken) {
+        if (taken.contains(Sensor.CAMERA)) {
+            g.setColor(CAMERA);
+            g.fill(fan(body.x(), body.y(), body.heading(), 45, CAMERA_RANGE));
+        }
+        if (taken.contains(Sensor.LIDAR)) {
+            g.setColor(LIDAR);
+            g.setStroke(new BasicStroke(1.5f / scale));
+            g.draw(fan(body.x(), body.y(), body.heading(), 90, LIDAR_RANGE));
+            g.setStroke(new BasicStroke(0.8f / scale));
+            for (int h = 0; h < sees.lidarHits(); h++) {
+                g.draw(new java.awt.geom.Line2D.Double(body.x(), body.y(), sees.lidarHitX(h), sees.lidarHitY(h)));
+            }
+        }
+        if (!taken.contains(Sensor.CAMERA)) {
+            return;
         }
         double r = 1.5 / scale;
         for (int h = 0; h < sees.cameraHits(); h++) {
@@ -207,6 +266,31 @@ public final class RunPainter {
             g.setColor(Color.BLACK);
             g.setStroke(new BasicStroke(0.5f / scale));
             g.draw(dot);
+        }
+    }
+
+    /**
+     * The objects the controller's sensors reported, over the bodies: each LIDAR obstacle outlined, each
+     * radar track a dot at its front with a line to where it will be in a second at its speed.
+     */
+    private void reported(Graphics2D g, Observation sees, Set<Sensor> taken) {
+        g.setColor(SENSED);
+        if (taken.contains(Sensor.OBSTACLES)) {
+            g.setStroke(new BasicStroke(2f / scale));
+            for (Box b : sees.obstacles()) {
+                g.draw(MapShapes.polygon(b));
+            }
+        }
+        if (!taken.contains(Sensor.RADAR)) {
+            return;
+        }
+        double r = 3.0 / scale;
+        double ticks = 1 / Dimensions.TICK_SECONDS;
+        g.setStroke(new BasicStroke(2f / scale));
+        for (Vehicle v : sees.traffic()) {
+            g.draw(new java.awt.geom.Line2D.Double(v.x(), v.y(), v.x() + v.headingDx() * v.speed() * ticks,
+                    v.y() + v.headingDy() * v.speed() * ticks));
+            g.fill(new Ellipse2D.Double(v.x() - r, v.y() - r, 2 * r, 2 * r));
         }
     }
 

@@ -75,6 +75,33 @@ public final class ViewerWindow {
         return new Dimension(panes * pane.width + (panes - 1) * GAP + CHROME.width, pane.height + CHROME.height);
     }
 
+    /** The panes side by side as the window shows them, painted off-screen into one picture. */
+    public static java.awt.image.BufferedImage frame(List<RunPainter> painters) {
+        int width = -GAP;
+        int height = 0;
+        for (RunPainter p : painters) {
+            width += p.size().width + GAP;
+            height = Math.max(height, p.size().height);
+        }
+        var image = new java.awt.image.BufferedImage(Math.max(1, width), Math.max(1, height),
+                java.awt.image.BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        try {
+            g.setColor(java.awt.Color.WHITE);
+            g.fillRect(0, 0, image.getWidth(), image.getHeight());
+            int x = 0;
+            for (RunPainter p : painters) {
+                Graphics2D pane = (Graphics2D) g.create(x, 0, p.size().width, p.size().height);
+                p.paint(pane);
+                pane.dispose();
+                x += p.size().width + GAP;
+            }
+        } finally {
+            g.dispose();
+        }
+        return image;
+    }
+
     public void show() {
         JFrame frame = new JFrame("sitcov view");
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);

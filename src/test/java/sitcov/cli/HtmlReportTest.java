@@ -117,4 +117,40 @@ class HtmlReportTest {
     private static String esc(String s) {
         return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
     }
+
+    @Test
+    void aFolderWithManyFindingsPicturesItsFirst24AndSaysHowToDrawTheRest() throws Exception {
+        Path folder = ResultsFolders.tinyReference();
+        // the failures and findings by kind, read from runs.csv: the reference's own failures, then each fault's findings
+        List<String> rows = Files.readAllLines(folder.resolve(ResultsFolder.RUNS));
+        List<String> header = List.of(rows.get(0).split(","));
+        java.util.Map<String, List<Integer>> kinds = new java.util.LinkedHashMap<>();
+        kinds.put("own", new ArrayList<>());
+        for (int n = 1; n < rows.size(); n++) {
+            String[] cells = rows.get(n).split(",", -1);
+            String fault = cells[header.indexOf("fault")];
+            boolean accident = java.util.stream.Stream.of("clashwithobstacle", "clashwithothercar", "leaveroad",
+                    "crosscentreline", "timeout").anyMatch(c -> !cells[header.indexOf(c)].equals("0"));
+            if (fault.equals("NONE") && accident) {
+                kinds.get("own").add(n);
+            } else if (cells[header.indexOf("detection")].equals("FOUND")) {
+                kinds.computeIfAbsent(fault, f -> new ArrayList<>()).add(n);
+            }
+        }
+        int all = kinds.values().stream().mapToInt(List::size).sum();
+        assertTrue(all > 24, "the case this test needs: more failures and findings than are drawn, " + kinds);
+        String html = Files.readString(folder.resolve(ResultsFolder.REPORT));
+        java.util.Set<Integer> drawn = new java.util.HashSet<>();
+        Matcher img = Pattern.compile("<img loading=\"lazy\" src=\"replays/(row-(\\d+)|fault-(\\d+))\\.png\"").matcher(html);
+        while (img.find()) {
+            drawn.add(img.group(2) != null ? Integer.parseInt(img.group(2)) : kinds.get(img.group(3)).get(0));
+        }
+        assertEquals(24, drawn.size(), "24 pictures: " + drawn);
+        for (List<Integer> kind : kinds.values()) {
+            int taken = (int) kind.stream().filter(drawn::contains).count();
+            assertEquals(kind.subList(0, taken), kind.stream().filter(drawn::contains).toList(), "a kind's first ones: " + kind);
+        }
+        assertTrue(html.contains("Pictures: 24 of the " + all + " failures and findings of this folder are drawn"), html);
+        assertTrue(html.contains("replay . --row <var>N</var> --png <var>FILE</var>"), "how to draw the rest");
+    }
 }

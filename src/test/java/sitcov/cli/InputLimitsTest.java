@@ -75,7 +75,7 @@ class InputLimitsTest {
     @Test
     void theOptionsOfAnUnknownOptionsMessageComeInAFixedOrder() {
         CliRunner r = CliRunner.run("run", "smoke", "--sed", "1");
-        assertTrue(r.err().contains("the options are --again, --controller, --dry-run, --fork, --out, --replications, --resume, --seed, --shard, --threads, --variants."), r.err());
+        assertTrue(r.err().contains("the options are --again, --controller, --dry-run, --fork, --out, --record, --replications, --resume, --seed, --shard, --threads, --variants."), r.err());
     }
 
     @Test

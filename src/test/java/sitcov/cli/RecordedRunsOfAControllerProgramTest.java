@@ -119,8 +119,7 @@ class RecordedRunsOfAControllerProgramTest {
                 assertTrue(Files.size(dir.resolve("row-" + row.number() + ".gif")) > 0);
             }
         }
-        assertTrue(Files.isRegularFile(whole.resolve(ResultsFolder.REPLAYS).resolve("fault-1.png")),
-                "the report pictures the variant's first finding from its recordings");
+        everyFailureAndFindingIsPicturedInTheReportAndPaintedByTheViewer(rows);
         List<List<String>> printed = PrintedCommands.of(whole, dir.resolve("printed"));
         assertTrue(printed.size() >= own + found, "own-failures.csv and the report print a command for each: " + printed);
         Files.createDirectories(dir.resolve("printed"));
@@ -168,6 +167,50 @@ class RecordedRunsOfAControllerProgramTest {
                 "the same recordings, and the kill's temporary file swept");
         assertArrayEquals(Files.readAllBytes(whole.resolve(ResultsFolder.RUNS)),
                 Files.readAllBytes(folder.resolve(ResultsFolder.RUNS)));
+    }
+
+    /** With the program gone: the report drawn again pictures every own failure and finding, and view paints every recorded row. */
+    private void everyFailureAndFindingIsPicturedInTheReportAndPaintedByTheViewer(List<ResultsRows.Row> rows)
+            throws Exception {
+        try (Stream<Path> old = Files.list(whole.resolve(ResultsFolder.REPLAYS))) {
+            for (Path f : old.toList()) {
+                Files.delete(f);
+            }
+        }
+        CliRunner report = CliRunner.run("report", whole.toString());
+        assertEquals(ExitCode.OK, report.exitCode(), report.err());
+        String html = Files.readString(whole.resolve(ResultsFolder.REPORT));
+        List<String> expected = new ArrayList<>();
+        java.util.Set<Integer> firstOf = new java.util.HashSet<>();
+        for (ResultsRows.Row row : rows) {
+            boolean own = row.variant().isEmpty() && sitcov.analysis.OwnFailures.failed(row.map());
+            boolean found = row.outcome().map(o -> o.detection().found()).orElse(false);
+            if (own || found && !firstOf.add(row.variant().get().id())) {
+                expected.add("replays/row-" + row.number() + ".png");
+            } else if (found) {
+                expected.add("replays/fault-" + row.variant().get().id() + ".png");
+            }
+        }
+        assertTrue(expected.size() > 2 && expected.stream().anyMatch(n -> n.contains("row-")),
+                "the case this test needs: own failures and findings beyond each variant's first, " + expected);
+        for (String name : expected) {
+            assertTrue(Files.isRegularFile(whole.resolve(name)), name + " is drawn without the program");
+            assertTrue(html.contains("<img loading=\"lazy\" src=\"" + name + "\""), name + " is in report.html");
+        }
+        try (Stream<Path> drawn = Files.list(whole.resolve(ResultsFolder.REPLAYS))) {
+            assertEquals(expected.size(), drawn.count(), "nothing but the failures and findings is pictured");
+        }
+        for (ResultsRows.Row row : rows) {
+            if (sitcov.recording.FolderRecordings.has(whole, row)) {
+                Path png = dir.resolve("view-row-" + row.number() + ".png");
+                CliRunner view = CliRunner.run("view", whole.toString(), "--row", Integer.toString(row.number()), "--png",
+                        png.toString());
+                assertEquals(ExitCode.OK, view.exitCode(), view.err());
+                assertEquals(row.variant().isEmpty() ? 1 : 2, Math.round(javax.imageio.ImageIO.read(png.toFile()).getWidth()
+                        / (double) sitcov.render.MapRenderer.imageSize(sitcov.render.MapRenderer.DEFAULT_SCALE).width),
+                        "row " + row.number() + " is painted in a pane per run");
+            }
+        }
     }
 
     private void deleteProgram() throws Exception {

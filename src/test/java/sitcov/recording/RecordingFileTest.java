@@ -79,6 +79,22 @@ class RecordingFileTest {
     }
 
     @Test
+    void theSensorsTheControllerTookComeBackAndARecordingWithoutThemReadsAsAProgramsDefault() throws Exception {
+        RunRecord live = Simulator.run(MapGenerator.generate(5), 7, Set.of(), RunObserver.NONE, BuiltinCar.FACTORY);
+        assertEquals(sitcov.control.Sensor.all(), live.commands().sensors(), "the builtin car is handed every sensor");
+        live.commands().sensors(java.util.EnumSet.of(sitcov.control.Sensor.RADAR, sitcov.control.Sensor.LIDAR));
+        Path file = dir.resolve("sensors.jsonl.gz");
+        Files.write(file, RecordingFile.write(recordingOf(live)));
+        assertEquals(java.util.EnumSet.of(sitcov.control.Sensor.RADAR, sitcov.control.Sensor.LIDAR),
+                RecordingFile.read(file).commands().sensors());
+        String text = RecordingText.format(recordingOf(live));
+        assertTrue(text.startsWith("{") && text.contains(",\"sensors\":[\"radar\",\"lidar\"]}\n"), text.substring(0, 300));
+        // as a recording written before sensors were recorded: the header without them
+        String older = text.replace(",\"sensors\":[\"radar\",\"lidar\"]", "");
+        assertEquals(sitcov.control.Sensor.reported(), RecordingText.parse(older, "older").commands().sensors());
+    }
+
+    @Test
     void aRecordingChangedByHandIsRefusedNamingItsFile() throws Exception {
         WorldMap map = MapGenerator.generate(5);
         Path file = dir.resolve("run.jsonl.gz");

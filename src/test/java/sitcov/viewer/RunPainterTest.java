@@ -162,4 +162,61 @@ class RunPainterTest {
         assertTrue(end.contains(" · least ρ "), end);
         assertFalse(end.contains("unknown"), end);
     }
+
+    /** How many pixels of the image are painted in {@code colour}. */
+    private static int pixelsOf(BufferedImage image, java.awt.Color colour) {
+        int n = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                n += (image.getRGB(x, y) & 0xFFFFFF) == (colour.getRGB() & 0xFFFFFF) ? 1 : 0;
+            }
+        }
+        return n;
+    }
+
+    /** Map 3's fault-free run, replayed from its commands as if its controller had taken only {@code sensors}, stepped 80 ticks. */
+    private static RunPainter replayedTaking(Set<sitcov.control.Sensor> sensors) {
+        WorldMap map = MapGenerator.generate(3);
+        var commands = BuiltinRuns.run(map, 3, Set.of(), (t, s, d) -> { }).commands();
+        commands.sensors(sensors);
+        RunPainter painter = new RunPainter(LiveRun.replaying(map, 3, commands, Long.MAX_VALUE), "replayed", 4);
+        for (int i = 0; i < 80; i++) {
+            painter.run().step();
+        }
+        return painter;
+    }
+
+    @Test
+    void theObservationsRadarTracksAreDrawnWhereTheyAre() {
+        RunPainter painter = replayedTaking(sitcov.control.Sensor.all());
+        var tracks = painter.run().telemetry().observation().traffic();
+        assertTrue(tracks.size() >= 2, "the case this test needs: other cars within the radar's range, " + tracks.size());
+        assertTrue(painter.run().detector().accidents().isEmpty(), "no accident ring covers a track");
+        BufferedImage image = paint(painter);
+        for (var v : tracks) {
+            int x = (int) Math.round(v.x() * 4);
+            int y = RunPainter.HEADER + (int) Math.round(v.y() * 4);
+            assertEquals(RunPainter.SENSED.getRGB() & 0xFFFFFF, image.getRGB(x, y) & 0xFFFFFF,
+                    "vehicle " + v.id() + "'s track at its front (" + v.x() + ", " + v.y() + ")");
+        }
+        int obstacles = painter.run().telemetry().observation().obstacles().size();
+        assertEquals("observes " + tracks.size() + " radar tracks · " + obstacles + " obstacle" + (obstacles == 1 ? "" : "s")
+                + " · camera · LIDAR", painter.observed());
+    }
+
+    @Test
+    void onlyTheSensorsTheControllerTookAreDrawn() {
+        int tracksAndObstacles = pixelsOf(paint(replayedTaking(Set.of(sitcov.control.Sensor.RADAR,
+                sitcov.control.Sensor.OBSTACLES))), RunPainter.SENSED);
+        int obstaclesOnly = pixelsOf(paint(replayedTaking(Set.of(sitcov.control.Sensor.OBSTACLES))), RunPainter.SENSED);
+        RunPainter blind = replayedTaking(Set.of());
+        BufferedImage none = paint(blind);
+        assertTrue(obstaclesOnly > 0, "the parked cars within range are outlined");
+        assertTrue(tracksAndObstacles > obstaclesOnly, "the tracks add their own: " + tracksAndObstacles + " > " + obstaclesOnly);
+        assertEquals(0, pixelsOf(none, RunPainter.SENSED), "a controller that took no sensor saw no track and no obstacle");
+        assertEquals(0, pixelsOf(none, RunPainter.CAMERA_HIT), "nor the camera's hits");
+        assertEquals("observes no sensor (pose, map, Target, signals)", blind.observed());
+        assertTrue(pixelsOf(paint(replayedTaking(Set.of(sitcov.control.Sensor.CAMERA))), RunPainter.CAMERA_HIT) > 0,
+                "the camera's hits, where it took the camera");
+    }
 }

@@ -179,7 +179,7 @@ class RunCommandTest {
             CliRunner refused = CliRunner.run("run", "--again", shard.toString(), option, "1/3", "--out", never.toString());
             assertEquals(ExitCode.USAGE, refused.exitCode(), option + ": " + refused.err());
             assertTrue(refused.err().contains("--again DIR takes the experiment from DIR's manifest; give only --out,"
-                    + " --threads, --fork and --dry-run beside it."), refused.err());
+                    + " --threads, --record, --fork and --dry-run beside it."), refused.err());
         }
         CliRunner none = CliRunner.run("run", "--again", dir.toString(), "--out", never.toString());
         assertEquals(ExitCode.USAGE, none.exitCode(), none.err());

@@ -2,7 +2,6 @@ package sitcov.cli;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -20,15 +19,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.io.TempDir;
-import sitcov.drivers.Drivers;
-import sitcov.experiment.ExperimentConfig;
-import sitcov.experiment.ExperimentEvent;
-import sitcov.experiment.ExperimentRunner;
-import sitcov.experiment.Shard;
 import sitcov.recording.Recording;
 import sitcov.recording.RecordingFile;
-import sitcov.report.ResultsRecorder;
-import sitcov.results.Manifest;
 import sitcov.results.ResultsFolder;
 import sitcov.results.ResultsRows;
 
@@ -136,21 +128,13 @@ class RecordedRunsOfAControllerProgramTest {
     @Order(1)
     void aRunKilledAndResumedKeepsTheSameRecordingsByteForByte() throws Exception {
         Path folder = dir.resolve("killed");
-        ExperimentConfig config = Preset.read(preset, null, Drivers.standard()).config();
-        ResultsRecorder recorder = ResultsRecorder.create(folder, new Manifest(config, Version.current(), Shard.WHOLE,
-                false, false), Map.of(), System::nanoTime, sitcov.builtin.BuiltinCar.FACTORY);
-        int[] judged = {0};
-        ExperimentRunner[] runner = new ExperimentRunner[1];
-        try (Controllers.Opened controllers = Controllers.open(config, folder)) {
-            runner[0] = new ExperimentRunner(config, Drivers.standard(), Shard.WHOLE, recorder.journal(), 1,
-                    System::nanoTime, List.of(recorder, e -> {
-                        if (e instanceof ExperimentEvent.MapJudged && ++judged[0] == 2) {
-                            runner[0].halt();
-                        }
-                    }), controllers.reference(), controllers.variants());
-            assertFalse(runner[0].run(), "the run was stopped after two maps");
-        }
-        recorder.close();
+        String classes = Path.of("target", "classes").toAbsolutePath() + java.io.File.pathSeparator
+                + Path.of("target", "test-classes").toAbsolutePath();
+        Process dying = new ProcessBuilder(ProcessHandle.current().info().command().orElse("java"), "-cp", classes,
+                DyingRun.class.getName(), preset.toString(), folder.toString(), "3")
+                .redirectErrorStream(true).redirectOutput(dir.resolve("dying.log").toFile()).start();
+        assertEquals(DyingRun.KILLED, dying.waitFor(), "the run died on its third map: " + Files.readString(dir.resolve("dying.log")));
+        assertTrue(Files.exists(folder.resolve(ResultsFolder.RECORDINGS)), "it had recorded failures before it died");
         // a kill in the middle of writing a recording leaves its temporary copy
         Path dirOf = folder.resolve(ResultsFolder.RECORDINGS);
         Files.createDirectories(dirOf);

@@ -14,21 +14,40 @@ import java.util.Properties;
 import java.util.Set;
 import java.util.TreeMap;
 import sitcov.coverage.GridDefinition;
+import java.util.stream.Stream;
 import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.CampaignTarget;
 import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.Shard;
 import sitcov.faults.FaultSet;
 import sitcov.judge.FaultyRuns;
+import sitcov.judge.Requirement;
 import sitcov.judge.Variant;
 import sitcov.judge.VariantList;
 
 /**
  * {@code campaign.properties}: what fixes a campaign's results folder (experiments/README.md, "Campaigns: falsifying
- * one version") and whether it is complete. Each fault's sub-folder has its own manifest, checked
- * against the one this one implies, so a campaign folder is resumed or reported from it alone.
+ * one version"), which shard of its trials it holds, and whether it is complete. Each target's sub-folder has its own
+ * manifest, checked against the one this one implies, so a campaign folder is resumed, reported or merged from it alone.
  */
-public record CampaignManifest(CampaignConfig config, String version, boolean complete) {
+public record CampaignManifest(CampaignConfig config, String version, Shard shard, boolean complete) {
     public static final String FILE = ResultsFolder.CAMPAIGN_MANIFEST;
     private static final String HEADER = "# sitcov campaign manifest";
+
+    /** The manifest of a whole campaign. */
+    public CampaignManifest(CampaignConfig config, String version, boolean complete) {
+        this(config, version, Shard.WHOLE, complete);
+    }
+
+    /** Whether {@code other} is a folder of the same campaign, whatever shard each holds and whether it is complete. */
+    public boolean sameCampaign(CampaignManifest other) {
+        return whole().complete(false).lines().equals(other.whole().complete(false).lines());
+    }
+
+    /** The same campaign, whole: what merging its shards makes. */
+    public CampaignManifest whole() {
+        return new CampaignManifest(config, version, Shard.WHOLE, complete);
+    }
 
     /** Whether {@code folder} holds a campaign (rather than one experiment). */
     public static boolean isCampaign(Path folder) {
@@ -36,7 +55,7 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
     }
 
     public CampaignManifest complete(boolean done) {
-        return new CampaignManifest(config, version, done);
+        return new CampaignManifest(config, version, shard, done);
     }
 
     List<String> lines() {
@@ -45,10 +64,15 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
         m.put("preset", c.name());
         m.put("sitcov_version", version);
         m.put("master_seed", Long.toString(c.masterSeed()));
-        if (c.onlySeeded()) {
+        if (c.onRequirements()) {
+            m.put("requirements", Requirement.format(c.requirements()));
+        } else if (c.onlySeeded()) {
             m.put("faults", FaultSet.format(Set.copyOf(Variant.faultsOf(c.variants()))));
         } else {
             m.put("variants", VariantList.format(c.variants()));
+        }
+        if (!shard.isWhole()) {
+            m.put("shard", shard.toString());
         }
         m.put("drivers", String.join(",", c.drivers()));
         m.put("trials", Integer.toString(c.trials()));
@@ -84,14 +108,19 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
             if (!Manifest.sha256(grid.format()).equals(required(p, "grid_sha256"))) {
                 throw new IllegalArgumentException(ResultsFolder.GRID + " does not match grid_sha256: the grid was edited");
             }
+            List<CampaignTarget> targets = p.containsKey("requirements")
+                    ? CampaignConfig.ofRequirements(Stream.of(p.getProperty("requirements").split(","))
+                            .map(Requirement::ofKey).toList())
+                    : CampaignConfig.ofVariants(p.containsKey("variants") ? VariantList.parse(p.getProperty("variants"))
+                            : ExperimentConfig.seeded(FaultSet.parse(required(p, "faults"))));
             CampaignConfig c = new CampaignConfig(required(p, "preset"), Long.parseLong(required(p, "master_seed")),
-                    p.containsKey("variants") ? VariantList.parse(p.getProperty("variants"))
-                            : ExperimentConfig.seeded(FaultSet.parse(required(p, "faults"))),
-                    List.of(required(p, "drivers").split(",")),
+                    targets, List.of(required(p, "drivers").split(",")),
                     Integer.parseInt(required(p, "trials")), Long.parseLong(required(p, "tick_budget")),
                     Integer.parseInt(required(p, "candidate_limit")), grid, FaultyRuns.ofKey(required(p, "faulty_runs")),
                     required(p, "controller"));
-            return new CampaignManifest(c, required(p, "sitcov_version"), Boolean.parseBoolean(required(p, "complete")));
+            Shard shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
+            return new CampaignManifest(c, required(p, "sitcov_version"), shard,
+                    Boolean.parseBoolean(required(p, "complete")));
         } catch (NoSuchFileException e) {
             throw new IllegalArgumentException(folder + " lacks " + e.getFile() + "; it is not a whole campaign folder");
         } catch (IllegalArgumentException e) {

@@ -18,6 +18,7 @@ import org.junit.jupiter.api.io.TempDir;
 import sitcov.builtin.BuiltinCar;
 import sitcov.drivers.Drivers;
 import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.CampaignTarget;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentEvent;
 import sitcov.experiment.ExperimentRunner;
@@ -151,9 +152,9 @@ class CampaignRunTest {
     }
 
     /** Starts the campaign's trials of {@code fault} into its sub-folder as run does, stopped as a kill would after {@code maps} maps. */
-    private static void killed(CampaignConfig campaign, Path folder, sitcov.judge.Variant fault, int maps) throws Exception {
+    private static void killed(CampaignConfig campaign, Path folder, CampaignTarget fault, int maps) throws Exception {
         ExperimentConfig config = campaign.trialsOf(fault);
-        ResultsRecorder recorder = ResultsRecorder.create(folder.resolve(CampaignConfig.folderOf(fault)),
+        ResultsRecorder recorder = ResultsRecorder.create(folder.resolve(fault.folder()),
                 new Manifest(config, Version.current(), Shard.WHOLE, false, false), Map.of(), System::nanoTime, BuiltinCar.FACTORY);
         ExperimentRunner[] runner = new ExperimentRunner[1];
         int[] judged = {0};
@@ -177,10 +178,10 @@ class CampaignRunTest {
             Files.createDirectories(folder);
             new CampaignManifest(campaign, Version.current(), false).write(folder);
             for (int before = 0; before < f; before++) {
-                String sub = CampaignConfig.folderOf(campaign.variants().get(before));
+                String sub = campaign.targets().get(before).folder();
                 ResultsFolders.copy(reference().resolve(sub), folder.resolve(sub));
             }
-            killed(campaign, folder, campaign.variants().get(f), f == 0 ? 5 : 3);
+            killed(campaign, folder, campaign.targets().get(f), f == 0 ? 5 : 3);
             // a kill while the campaign's own files were written whole leaves a temporary copy: resume sweeps it
             Files.writeString(folder.resolve(".campaign.csv77.tmp"), "fault,driv");
             CliRunner r = CliRunner.run("run", "--resume", folder.toString(), "--threads", "2");

@@ -67,6 +67,9 @@ public final class RequirementVerdict {
     }
 
     private static String pair(PairedTrials t) {
+        if (t.falsifiedA() + t.falsifiedB() == 0) {
+            return t.target().key() + ", " + t.a() + " against " + t.b() + ": neither falsified it in any trial.";
+        }
         String often = String.format(Locale.ROOT, "falsified in %d against %d trials (only %s in %d, only %s in %d", t.falsifiedA(),
                 t.falsifiedB(), t.a(), t.onlyA(), t.b(), t.onlyB());
         if (Double.isNaN(t.mcNemarP())) {

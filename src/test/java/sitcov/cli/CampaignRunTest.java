@@ -243,21 +243,7 @@ class CampaignRunTest {
 
     /** Every result file of the two campaign folders, sub-folders included, is the same byte for byte. */
     private static void assertSame(Path expected, Path actual) throws IOException {
-        List<String> files = resultFiles(expected);
-        assertTrue(files.contains("campaign.csv") && files.contains("fault-17/runs.csv"), "a campaign folder: " + files);
-        assertEquals(files, resultFiles(actual));
-        for (String f : files) {
-            assertArrayEquals(Files.readAllBytes(expected.resolve(f)), Files.readAllBytes(actual.resolve(f)),
-                    f + " differs between " + expected + " and " + actual);
-        }
-    }
-
-    private static List<String> resultFiles(Path folder) throws IOException {
-        try (Stream<Path> s = Files.walk(folder)) {
-            return s.filter(Files::isRegularFile)
-                    .filter(p -> !ResultsFolder.TIMED.contains(p.getFileName().toString())
-                            && !p.getFileName().toString().equals(ResultsFolder.LOCK))
-                    .map(p -> folder.relativize(p).toString().replace('\\', '/')).sorted().toList();
-        }
+        assertTrue(ResultsFolders.campaignFiles(expected).contains("fault-17/runs.csv"), "a campaign folder of fault 17");
+        ResultsFolders.assertSameCampaign(expected, actual);
     }
 }

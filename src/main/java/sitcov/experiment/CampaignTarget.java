@@ -26,7 +26,7 @@ public sealed interface CampaignTarget {
     /** A few words beside its key: a variant's label, what a requirement asks. */
     String label();
 
-    /** Its name in a sentence or a figure's panel, e.g. {@code fault 17 (label)}. */
+    /** Its name in a sentence or a figure's panel, e.g. {@code fault 17 (label)} or {@code timeout: misses the Target}. */
     String title();
 
     /** Its place among a campaign's targets: a variant's id, a requirement's place in {@link Requirement}'s order. */
@@ -122,7 +122,7 @@ public sealed interface CampaignTarget {
 
         @Override
         public String title() {
-            return requirement.key() + " (" + requirement.sentence() + ")";
+            return requirement.key() + ": " + requirement.violated();
         }
 
         @Override

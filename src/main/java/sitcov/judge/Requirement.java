@@ -16,20 +16,23 @@ import sitcov.oracle.Failure;
  * (experiments/README.md, "Requirement campaigns: where your controller itself fails").
  */
 public enum Requirement {
-    OBSTACLE(AccidentType.CLASHWITHOBSTACLE, "no clash with a parked car"),
-    CAR(AccidentType.CLASHWITHOTHERCAR, "no clash with a moving car it is to blame for"),
-    LEAVEROAD(AccidentType.LEAVEROAD, "no leaving the road"),
-    CENTRELINE(AccidentType.CROSSCENTRELINE, "no crossing of the centre line without an excuse"),
-    TIMEOUT(AccidentType.TIMEOUT, "the Target reached within the timeout"),
+    OBSTACLE(AccidentType.CLASHWITHOBSTACLE, "no clash with a parked car", "clashes with a parked car"),
+    CAR(AccidentType.CLASHWITHOTHERCAR, "no clash with a moving car it is to blame for", "clashes with a moving car"),
+    LEAVEROAD(AccidentType.LEAVEROAD, "no leaving the road", "leaves the road"),
+    CENTRELINE(AccidentType.CROSSCENTRELINE, "no crossing of the centre line without an excuse", "crosses the centre line"),
+    TIMEOUT(AccidentType.TIMEOUT, "the Target reached within the timeout", "misses the Target"),
     /** The one requirement without an accident type, so without a robustness. */
-    CONTROLLER(null, "no controller failure (a command every tick, in time, within the world's rules)");
+    CONTROLLER(null, "no controller failure (a command every tick, in time, within the world's rules)",
+            "fails as a controller");
 
     private final AccidentType accident;
     private final String sentence;
+    private final String violated;
 
-    Requirement(AccidentType accident, String sentence) {
+    Requirement(AccidentType accident, String sentence, String violated) {
         this.accident = accident;
         this.sentence = sentence;
+        this.violated = violated;
     }
 
     /** Its name in presets, folders and tables: an accident type's word, or {@code controller}. */
@@ -40,6 +43,11 @@ public enum Requirement {
     /** What it asks of the controller, in a few words. */
     public String sentence() {
         return sentence;
+    }
+
+    /** What a run that violates it does, in three or four words (a figure's panel has no room for more). */
+    public String violated() {
+        return violated;
     }
 
     /** The accident type whose robustness ρ measures how near a run came to violating it; empty for {@link #CONTROLLER}. */

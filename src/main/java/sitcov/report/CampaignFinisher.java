@@ -5,7 +5,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
-import java.util.Locale;
 import sitcov.analysis.CampaignAnalysis;
 import sitcov.analysis.CampaignTrial;
 import sitcov.experiment.CampaignConfig;

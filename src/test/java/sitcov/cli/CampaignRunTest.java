@@ -12,7 +12,6 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import sitcov.builtin.BuiltinCar;
@@ -27,7 +26,6 @@ import sitcov.faults.Fault;
 import sitcov.report.ResultsRecorder;
 import sitcov.results.CampaignManifest;
 import sitcov.results.Manifest;
-import sitcov.results.ResultsFolder;
 
 class CampaignRunTest {
     private static final String TINY = "src/test/resources/presets/campaign-tiny.properties";

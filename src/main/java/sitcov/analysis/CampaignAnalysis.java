@@ -4,25 +4,35 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.OptionalDouble;
 import sitcov.experiment.CampaignConfig;
-import sitcov.judge.Variant;
+import sitcov.experiment.CampaignTarget;
+import sitcov.stats.ConfidenceInterval;
 import sitcov.stats.FisherExact;
 import sitcov.stats.Holm;
 import sitcov.stats.KaplanMeier;
 import sitcov.stats.LogRank;
 import sitcov.stats.Normal;
+import sitcov.stats.Wilson;
 
 /**
  * The statistics of a campaign (experiments/README.md, "Campaigns: falsifying one version"), from its trials: per
- * fault and driver, the trials falsified and the Kaplan–Meier median ticks to the first failure; per
- * fault and pair of drivers, Fisher's exact test on the trials falsified and the log-rank test on the
+ * target and driver, the trials falsified and the Kaplan–Meier median ticks to the first failure. A campaign of
+ * variants: per fault and pair of drivers, Fisher's exact test on the trials falsified and the log-rank test on the
  * ticks to first failure, Holm-adjusted together as one family; over all faults, per driver the
- * faults falsified, and per pair a log-rank test stratified by fault, Holm-adjusted over the pairs.
+ * faults falsified, and per pair a log-rank test stratified by fault, Holm-adjusted over the pairs. A campaign
+ * of requirements: per requirement and pair the paired tests of {@link PairedTrials}.
  */
 public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials, List<DriverResult> drivers,
-                               List<PairTest> pairs, List<Stratified> stratified, List<Overall> overall) {
-    /** One driver on one fault: trials falsified of {@code trials}, the KM median (empty: not reached), distinct failures. */
-    public record DriverResult(Variant fault, String driver, int falsified, int trials, OptionalDouble medianTicks,
-                               int distinctFailures, List<KaplanMeier.Step> curve) {
+                               List<PairTest> pairs, List<Stratified> stratified, List<Overall> overall,
+                               List<PairedTrials> paired) {
+    /**
+     * One driver on one target: trials falsified of {@code trials} with the share's 95 % Wilson interval, the KM
+     * median (empty: not reached) with its 95 % Brookmeyer–Crowley interval, distinct failures, the curve; over
+     * its falsified trials only (empty when none), the mean ticks and the median and mean maps to the failure.
+     */
+    public record DriverResult(CampaignTarget target, String driver, int falsified, int trials, OptionalDouble medianTicks,
+                               int distinctFailures, List<KaplanMeier.Step> curve, ConfidenceInterval share,
+                               KaplanMeier.MedianInterval medianInterval, OptionalDouble meanTicks,
+                               OptionalDouble medianMaps, OptionalDouble meanMaps) {
     }
 
     /**
@@ -30,7 +40,7 @@ public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials
      * when it cannot tell the two apart whatever happened: Fisher when both falsified every trial or none,
      * the log-rank test when no trial of either was falsified.
      */
-    public record PairTest(Variant fault, String a, String b, int falsifiedA, int falsifiedB, double fisherP,
+    public record PairTest(CampaignTarget fault, String a, String b, int falsifiedA, int falsifiedB, double fisherP,
                            double fisherHolm, LogRank.Result logRank, double logRankHolm, String why) {
     }
 
@@ -49,13 +59,18 @@ public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials
 
     public static CampaignAnalysis of(CampaignConfig config, List<CampaignTrial> trials) {
         List<DriverResult> drivers = new ArrayList<>();
-        for (Variant f : config.variants()) {
+        double z = Normal.quantile(0.975);
+        for (CampaignTarget f : config.targets()) {
             for (String d : config.drivers()) {
                 List<CampaignTrial> mine = of(trials, f, d);
                 List<KaplanMeier.Step> curve = KaplanMeier.curve(CampaignTrial.observations(mine));
-                int falsified = (int) mine.stream().filter(CampaignTrial::falsified).count();
+                List<CampaignTrial> hits = mine.stream().filter(CampaignTrial::falsified).toList();
                 int distinct = (int) mine.stream().flatMap(t -> t.failure().stream()).distinct().count();
-                drivers.add(new DriverResult(f, d, falsified, mine.size(), KaplanMeier.median(curve), distinct, curve));
+                drivers.add(new DriverResult(f, d, hits.size(), mine.size(), KaplanMeier.median(curve), distinct, curve,
+                        Wilson.interval(hits.size(), mine.size()), KaplanMeier.medianInterval(curve, z),
+                        hits.stream().mapToLong(CampaignTrial::ticksToFailure).average(),
+                        median(hits.stream().mapToDouble(CampaignTrial::mapsRun).sorted().toArray()),
+                        hits.stream().mapToInt(CampaignTrial::mapsRun).average()));
             }
         }
         List<String[]> pairs = new ArrayList<>();
@@ -64,16 +79,25 @@ public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials
                 pairs.add(new String[] {config.drivers().get(i), config.drivers().get(j)});
             }
         }
+        if (config.onRequirements()) {
+            return new CampaignAnalysis(config, List.copyOf(trials), drivers, List.of(), List.of(), overall(config, drivers),
+                    PairedTrials.of(config, trials, pairs));
+        }
         return new CampaignAnalysis(config, List.copyOf(trials), drivers, pairTests(config, trials, pairs),
-                stratified(config, trials, pairs), overall(config, drivers));
+                stratified(config, trials, pairs), overall(config, drivers), List.of());
+    }
+
+    private static OptionalDouble median(double[] sorted) {
+        int n = sorted.length;
+        return n == 0 ? OptionalDouble.empty() : OptionalDouble.of((sorted[(n - 1) / 2] + sorted[n / 2]) / 2);
     }
 
     private static List<PairTest> pairTests(CampaignConfig config, List<CampaignTrial> trials, List<String[]> pairs) {
-        record Raw(Variant f, String a, String b, int fa, int fb, double fisher, LogRank.Result lr, String why) {
+        record Raw(CampaignTarget f, String a, String b, int fa, int fb, double fisher, LogRank.Result lr, String why) {
         }
         List<Raw> raw = new ArrayList<>();
         List<Double> family = new ArrayList<>();
-        for (Variant f : config.variants()) {
+        for (CampaignTarget f : config.targets()) {
             for (String[] p : pairs) {
                 List<CampaignTrial> a = of(trials, f, p[0]);
                 List<CampaignTrial> b = of(trials, f, p[1]);
@@ -111,7 +135,7 @@ public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials
             double o = 0;
             double e = 0;
             double v = 0;
-            for (Variant f : config.variants()) {
+            for (CampaignTarget f : config.targets()) {
                 LogRank.Result r = LogRank.test(CampaignTrial.observations(of(trials, f, p[0])),
                         CampaignTrial.observations(of(trials, f, p[1])));
                 o += r.observedA();
@@ -141,9 +165,9 @@ public record CampaignAnalysis(CampaignConfig config, List<CampaignTrial> trials
         return out;
     }
 
-    /** The trials of {@code driver} on {@code fault}, in trial order. */
-    public static List<CampaignTrial> of(List<CampaignTrial> trials, Variant fault, String driver) {
-        return trials.stream().filter(t -> t.fault().equals(fault) && t.driver().equals(driver))
+    /** The trials of {@code driver} on {@code target}, in trial order. */
+    public static List<CampaignTrial> of(List<CampaignTrial> trials, CampaignTarget target, String driver) {
+        return trials.stream().filter(t -> t.target().equals(target) && t.driver().equals(driver))
                 .sorted(java.util.Comparator.comparingInt(CampaignTrial::trial)).toList();
     }
 

@@ -2,44 +2,40 @@ package sitcov.analysis;
 
 import java.util.List;
 import java.util.Optional;
+import sitcov.experiment.CampaignTarget;
 import sitcov.experiment.DriverRun;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.StopReason;
-import sitcov.judge.Variant;
-import sitcov.judge.FaultOutcome;
-import sitcov.judge.Notion;
 import sitcov.oracle.Failure;
 import sitcov.stats.KaplanMeier;
 
 /**
- * One trial of one driver in the campaign of one fault (experiments/README.md, "Campaigns: falsifying one version"):
- * falsified when a map it ran found the fault (differential oracle) within the budget.
- * {@code ticksToFailure} is the ticks spent up to and including that map, or all the ticks spent;
- * {@code survivalTicks} is what the survival analysis uses: the ticks to failure of a falsified trial,
- * else the ticks spent capped at the budget (censored) — a map that found the fault only past the
- * budget does not count, so no driver gains from overshooting it.
+ * One trial of one driver in the campaign of one target (experiments/README.md, "Campaigns: falsifying one version"):
+ * falsified when a map it ran falsified the target (its variant found by the differential oracle, or its
+ * requirement violated by the reference) within the budget. {@code ticksToFailure} is the ticks spent up to and
+ * including that map, or all the ticks spent, and {@code mapsRun} the maps; {@code survivalTicks} is what the
+ * survival analysis uses: the ticks to failure of a falsified trial, else the ticks spent capped at the budget
+ * (censored) — a map that falsified the target only past the budget does not count, so no driver gains from
+ * overshooting it.
  */
-public record CampaignTrial(Variant fault, String driver, int trial, long campaignSeed, String streamLabel,
+public record CampaignTrial(CampaignTarget target, String driver, int trial, long campaignSeed, String streamLabel,
                             boolean falsified, long ticksToFailure, long survivalTicks, int mapsRun, StopReason stop,
                             Optional<MapRun> found, Optional<Failure> accident) {
     /** The trial as {@code run} (one driver's share of replication {@code trial}) recorded it. */
-    public static CampaignTrial of(Variant fault, int trial, long campaignSeed, String streamLabel, long tickBudget,
+    public static CampaignTrial of(CampaignTarget target, int trial, long campaignSeed, String streamLabel, long tickBudget,
                                    DriverRun run) {
         long spent = 0;
         int maps = 0;
         for (MapRun m : run.maps()) {
             spent += m.ticks();
             maps++;
-            Optional<FaultOutcome> hit = m.faults().stream()
-                    .filter(f -> f.variant().equals(fault) && f.found(Notion.DIFFERENTIAL)).findFirst();
-            if (hit.isPresent()) {
+            if (target.falsifiedOn(m)) {
                 boolean within = spent <= tickBudget;
-                return new CampaignTrial(fault, run.driver(), trial, campaignSeed, streamLabel, within, spent,
-                        within ? spent : tickBudget, maps, run.spend().stoppedBy(), Optional.of(m),
-                        hit.get().newAccident());
+                return new CampaignTrial(target, run.driver(), trial, campaignSeed, streamLabel, within, spent,
+                        within ? spent : tickBudget, maps, run.spend().stoppedBy(), Optional.of(m), target.failureOn(m));
             }
         }
-        return new CampaignTrial(fault, run.driver(), trial, campaignSeed, streamLabel, false, spent,
+        return new CampaignTrial(target, run.driver(), trial, campaignSeed, streamLabel, false, spent,
                 Math.min(spent, tickBudget), maps, run.spend().stoppedBy(), Optional.empty(), Optional.empty());
     }
 

@@ -10,10 +10,10 @@ import java.util.Map;
 import sitcov.builtin.BuiltinCar;
 import sitcov.drivers.Drivers;
 import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.CampaignTarget;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentRunner;
 import sitcov.experiment.Shard;
-import sitcov.judge.Variant;
 import sitcov.report.CampaignFinisher;
 import sitcov.report.ResultsRecorder;
 import sitcov.results.CampaignManifest;
@@ -23,10 +23,12 @@ import sitcov.results.Manifest;
 import sitcov.results.ResultsFolder;
 
 /**
- * {@code run PRESET} for a campaign (experiments/README.md, "Campaigns: falsifying one version"): each fault's trials
- * run as an ordinary experiment into its own sub-folder (streamed, resumable), one fault after another,
+ * {@code run PRESET} for a campaign (experiments/README.md, "Campaigns: falsifying one version"): each target's trials
+ * run as an ordinary experiment into its own sub-folder (streamed, resumable), one target after another,
  * then the campaign's own files are written from the sub-folders. {@code run --resume DIR} takes up a
- * killed campaign where it stopped: finished faults are kept, the interrupted one is resumed.
+ * killed campaign where it stopped: finished targets are kept, the interrupted one is resumed. With
+ * {@code --shard K/N} every target's sub-folder holds that shard of its trials, and {@code merge} writes the
+ * campaign's files once the shards are together.
  */
 final class CampaignRun {
     private final Drivers drivers;
@@ -44,13 +46,15 @@ final class CampaignRun {
     }
 
     /** What a campaign does, as its first line says it. */
-    static String plan(CampaignConfig c, int threads) {
-        return "run: " + c.name() + ": campaign of " + c.variants().size() + " fault" + (c.variants().size() == 1 ? "" : "s")
-                + ", " + c.trials() + " trials per driver and fault, at most " + c.tickBudget() + " ticks a trial, drivers "
-                + String.join(", ", c.drivers()) + ", on " + threads + " threads";
+    static String plan(CampaignConfig c, Shard shard, int threads) {
+        int n = c.targets().size();
+        return "run: " + c.name() + (shard.isWhole() ? "" : " shard " + shard) + ": campaign of " + n + " " + c.noun()
+                + (n == 1 ? "" : "s") + ", " + c.trials() + " trials per driver and " + c.noun() + ", at most "
+                + c.tickBudget() + " ticks a trial, drivers " + String.join(", ", c.drivers()) + ", on " + threads
+                + " threads";
     }
 
-    int start(CampaignConfig c, Path folder) throws UsageException {
+    int start(CampaignConfig c, Shard shard, Path folder) throws UsageException {
         FolderLock lock;
         try {
             Files.createDirectories(folder);
@@ -61,7 +65,7 @@ final class CampaignRun {
         } catch (IllegalStateException e) {
             throw new UsageException("run: " + e.getMessage() + ".");
         }
-        CampaignManifest manifest = new CampaignManifest(c, Version.current(), false);
+        CampaignManifest manifest = new CampaignManifest(c, Version.current(), shard, false);
         try {
             if (!ResultsFolder.holdsNothing(folder)) {
                 lock.close();
@@ -104,13 +108,13 @@ final class CampaignRun {
 
     private int execute(CampaignManifest manifest, Path folder, FolderLock lock, String note) throws UsageException {
         CampaignConfig c = manifest.config();
-        err.println(plan(c, threads) + ", into " + folder + note);
+        err.println(plan(c, manifest.shard(), threads) + ", into " + folder + note);
         long start = System.nanoTime();
         try {
             int n = 0;
-            for (Variant f : c.variants()) {
+            for (CampaignTarget f : c.targets()) {
                 n++;
-                int code = runFault(c, f, folder, n);
+                int code = runTarget(manifest, f, folder.resolve(f.folder()), n);
                 if (code != ExitCode.OK) {
                     return code;
                 }
@@ -128,16 +132,22 @@ final class CampaignRun {
         VerdictPrinter.print(out, folder);
         out.println("Results in " + folder + " (" + Math.round((System.nanoTime() - start) / 1e9) + " s on " + threads
                 + " threads)");
-        out.println("The report: " + folder.resolve(ResultsFolder.CAMPAIGN_PAGE)
-                + " (the verdict, the tables and the survival curves on one page; open it in a browser)");
+        if (manifest.shard().isWhole()) {
+            out.println("The report: " + folder.resolve(ResultsFolder.CAMPAIGN_PAGE)
+                    + " (the verdict, the tables and the survival curves on one page; open it in a browser)");
+        } else {
+            out.println("Shard " + manifest.shard() + " of the campaign's trials: its tables and verdict are written by"
+                    + " 'merge SHARD_DIR... --out DIR' once all " + manifest.shard().n() + " shards are done.");
+        }
         return ExitCode.OK;
     }
 
-    /** The trials of one fault, into its sub-folder: skipped when complete, resumed when a kill interrupted them. */
-    private int runFault(CampaignConfig c, Variant f, Path folder, int n) throws IOException, UsageException {
-        Path sub = folder.resolve(CampaignConfig.folderOf(f));
+    /** The trials of one target, into {@code sub}: skipped when complete, resumed when a kill interrupted them. */
+    private int runTarget(CampaignManifest campaign, CampaignTarget f, Path sub, int n) throws IOException, UsageException {
+        CampaignConfig c = campaign.config();
+        Shard shard = campaign.shard();
         if (ResultsRecorder.isComplete(sub)) {
-            CampaignFinisher.check(Manifest.read(sub), c, f, folder);
+            CampaignFinisher.check(Manifest.read(sub), campaign, f, sub);
             return ExitCode.OK;
         }
         ExperimentConfig config = c.trialsOf(f);
@@ -146,10 +156,10 @@ final class CampaignRun {
         try {
             if (Files.isRegularFile(sub.resolve(ResultsFolder.MANIFEST))) {
                 Manifest m = Manifest.read(sub);
-                CampaignFinisher.check(m, c, f, folder);
+                CampaignFinisher.check(m, campaign, f, sub);
                 recorder = ResultsRecorder.resume(sub, m, execution, System::nanoTime, BuiltinCar.FACTORY);
             } else {
-                recorder = ResultsRecorder.create(sub, new Manifest(config, Version.current(), Shard.WHOLE, false, false),
+                recorder = ResultsRecorder.create(sub, new Manifest(config, Version.current(), shard, false, false),
                         execution, System::nanoTime, BuiltinCar.FACTORY);
             }
         } catch (IllegalStateException e) {
@@ -165,10 +175,9 @@ final class CampaignRun {
         }
         ProgressListener progress = new ProgressListener(err, err == System.err && System.console() != null,
                 System::nanoTime);
-        ExperimentRunner runner = new ExperimentRunner(config, drivers, Shard.WHOLE, recorder.journal(), threads,
+        ExperimentRunner runner = new ExperimentRunner(config, drivers, shard, recorder.journal(), threads,
                 System::nanoTime, List.of(recorder, progress), controllers.reference(), controllers.variants());
-        err.println("run: " + (f instanceof Variant.Seeded ? "fault " : "variant ") + f.id() + " (" + n + " of "
-                + c.variants().size() + "), into " + sub);
+        err.println("run: " + f.column() + " " + f.key() + " (" + n + " of " + c.targets().size() + "), into " + sub);
         try (controllers) {
             runner.run();
         } catch (FolderLock.Lost e) {
@@ -177,7 +186,7 @@ final class CampaignRun {
         } catch (IllegalStateException | UncheckedIOException e) {
             err.println("sitcov: run: " + e.getMessage());
             err.println("sitcov: run: what was judged is kept in " + sub + "; continue with 'run --resume "
-                    + folder + "'.");
+                    + sub.getParent() + "'.");
             return ExitCode.FAILURE;
         } finally {
             recorder.close();

@@ -8,7 +8,9 @@ import java.util.List;
 import java.util.Set;
 import sitcov.analysis.Summary;
 import sitcov.builtin.BuiltinCar;
+import sitcov.report.CampaignMerger;
 import sitcov.report.ShardMerger;
+import sitcov.results.CampaignManifest;
 import sitcov.results.IoReason;
 import sitcov.results.Manifest;
 
@@ -49,6 +51,9 @@ final class MergeCommand implements Command {
         if (sitcov.estimate.EstimateFolder.isEstimate(shards.get(0))) {
             return mergeEstimates(shards, target, out, err);
         }
+        if (CampaignManifest.isCampaign(shards.get(0))) {
+            return mergeCampaign(shards, target, out, err);
+        }
         try {
             Summary summary = ShardMerger.merge(shards, target, RunCommand.execution(1), BuiltinCar.FACTORY);
             Manifest merged = Manifest.read(target);
@@ -63,6 +68,21 @@ final class MergeCommand implements Command {
             err.println("sitcov: merge: could not write " + target + ": " + IoReason.of(e, target) + ".");
             return ExitCode.FAILURE;
         }
+        out.println("Merged " + shards.size() + " shards into " + target);
+        return ExitCode.OK;
+    }
+
+    /** The shards of a campaign (experiments/README.md, "Campaigns: falsifying one version"): each target's merged, then the campaign's files. */
+    private static int mergeCampaign(List<Path> shards, Path target, PrintStream out, PrintStream err) throws UsageException {
+        try {
+            CampaignMerger.merge(shards, target, RunCommand.execution(1), BuiltinCar.FACTORY);
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            throw new UsageException("merge: " + e.getMessage() + ".");
+        } catch (IOException e) {
+            err.println("sitcov: merge: could not write " + target + ": " + IoReason.of(e, target) + ".");
+            return ExitCode.FAILURE;
+        }
+        VerdictPrinter.print(out, target);
         out.println("Merged " + shards.size() + " shards into " + target);
         return ExitCode.OK;
     }

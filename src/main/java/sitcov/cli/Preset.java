@@ -14,11 +14,14 @@ import sitcov.drivers.Drivers;
 import sitcov.experiment.AnalysisPlan;
 import sitcov.experiment.BudgetKind;
 import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.CampaignTarget;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.faults.FaultSet;
 import sitcov.judge.FaultyRuns;
+import sitcov.judge.Requirement;
 import sitcov.judge.Variant;
 import sitcov.judge.VariantList;
+import sitcov.protocol.ControllerChoice;
 import sitcov.results.IoReason;
 
 /**
@@ -36,7 +39,7 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
     private static Set<String> keys() {
         Set<String> keys = new java.util.TreeSet<>(List.of("name", "master_seed", "candidates", "replications", "faults",
                 "budget", "faulty_runs", "grid", "description", "sweep", "drivers", "candidate_limit", "controller",
-                "protocol", "trials", "tick_budget", "variants"));
+                "protocol", "trials", "tick_budget", "variants", "requirements"));
         keys.addAll(AnalysisPlan.keys());
         return Set.copyOf(keys);
     }
@@ -93,6 +96,12 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
             throw new UsageException("run: " + file + ": protocol=" + protocol + " is not a protocol; use protocol=suites"
                     + " (test suites compared, the default) or protocol=campaign (falsification campaigns).");
         }
+        if (p.containsKey("requirements")) {
+            throw new UsageException("run: " + file + ": requirements= chooses the reference's own requirements that a"
+                    + " falsification campaign seeks to violate; add protocol=campaign with variants=none (and trials=,"
+                    + " tick_budget=), or remove requirements= (the suites count the own failures of variants=none as"
+                    + " they are).");
+        }
         for (String key : CAMPAIGN_ONLY) {
             if (p.containsKey(key)) {
                 throw new UsageException("run: " + file + ": " + key + "= belongs to a falsification campaign; add"
@@ -128,18 +137,14 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
             long ticks = count(file, "tick_budget", p.getProperty("tick_budget"), Integer.MAX_VALUE);
             int trials = count(file, "trials", required(p, "trials", file), ExperimentConfig.MAX_REPLICATIONS);
             String controller = Controllers.check(p.getProperty("controller", ExperimentConfig.BUILTIN).strip());
-            List<Variant> variants = variants(p, file, controller);
-            if (variants.isEmpty()) {
-                throw new UsageException("run: " + file + ": a campaign falsifies the reference's variants, one campaign"
-                        + " each, and this one has none; name them with variants= (or faults= for the builtin car's).");
-            }
+            List<CampaignTarget> targets = targets(p, file, controller);
             String limit = p.getProperty("candidate_limit");
             int candidateLimit = limit == null ? CampaignConfig.DEFAULT_CANDIDATE_LIMIT
                     : count(file, "candidate_limit", limit, ExperimentConfig.MAX_CANDIDATES);
             FaultyRuns faultyRuns = FaultyRuns.ofKey(p.getProperty("faulty_runs", FaultyRuns.UNTIL_VERDICT.key()).strip());
             String gridFile = p.getProperty("grid");
             GridDefinition grid = gridFile == null ? GridDefinition.paper() : GridDefinition.read(Path.of(gridFile.strip()));
-            return new CampaignConfig(name, seed, variants, drivers(p, file, known), trials, ticks,
+            return new CampaignConfig(name, seed, targets, drivers(p, file, known), trials, ticks,
                     candidateLimit, grid, faultyRuns, controller);
         } catch (IOException e) {
             throw new UsageException("run: " + file + ": cannot read its grid: " + sitcov.results.IoReason.of(e) + ".");
@@ -149,6 +154,41 @@ record Preset(Path file, ExperimentConfig config, CampaignConfig campaign) {
         } catch (IllegalArgumentException e) {
             throw new UsageException("run: " + file + ": " + e.getMessage() + ".");
         }
+    }
+
+    /**
+     * What a campaign falsifies: each of the reference's variants, or with {@code variants=none} each of its own
+     * requirements, those {@code requirements=} names or every one that applies to its controller.
+     */
+    private static List<CampaignTarget> targets(Properties p, Path file, String controller) throws UsageException {
+        List<Variant> variants = variants(p, file, controller);
+        if (!variants.isEmpty()) {
+            if (p.containsKey("requirements")) {
+                throw new UsageException("run: " + file + ": requirements= chooses the reference's own requirements, which a"
+                        + " campaign falsifies with variants=none; this one falsifies " + variants.size() + " variant"
+                        + (variants.size() == 1 ? "" : "s") + ": set variants=none, or remove requirements=.");
+            }
+            return CampaignConfig.ofVariants(variants);
+        }
+        if (!p.containsKey("requirements")) {
+            ControllerChoice choice = ControllerChoice.parse(controller);
+            boolean inProcessBuiltin = choice instanceof ControllerChoice.Builtin || choice instanceof ControllerChoice.Planted;
+            return CampaignConfig.ofRequirements(Requirement.defaults(!inProcessBuiltin));
+        }
+        List<Requirement> chosen = new ArrayList<>();
+        for (String part : p.getProperty("requirements").split(",", -1)) {
+            Requirement r;
+            try {
+                r = Requirement.ofKey(part);
+            } catch (IllegalArgumentException e) {
+                throw new UsageException("run: " + file + ": requirements=: " + e.getMessage() + " (separated by commas).");
+            }
+            if (chosen.contains(r)) {
+                throw new UsageException("run: " + file + ": requirements= names " + r.key() + " twice; name it once.");
+            }
+            chosen.add(r);
+        }
+        return CampaignConfig.ofRequirements(chosen);
     }
 
     private static String name(Properties p, Path file) throws UsageException {

@@ -141,24 +141,27 @@ final class RunCommand implements Command {
         return execute(recorder, controllers, folder, threads, "", out, err);
     }
 
-    /** A campaign (experiments/README.md, "Campaigns: falsifying one version"): run whole, each fault into its own sub-folder. */
-    private int campaign(CampaignConfig campaign, Options options, int threads, PrintStream out, PrintStream err)
+    /**
+     * A campaign (experiments/README.md, "Campaigns: falsifying one version"): each target into its own sub-folder; a
+     * shard runs that share of every target's trials.
+     */
+    private int campaign(CampaignConfig c, Options options, int threads, PrintStream out, PrintStream err)
             throws UsageException {
-        if (options.has("--shard")) {
-            throw new UsageException("run: " + campaign.name() + " is a campaign, which runs whole; --shard splits the"
-                    + " suites' replications: drop --shard.");
-        }
+        return campaign(c, shard(options, c.trials(), c.name(), "trials", true), options, threads, out, err);
+    }
+
+    private int campaign(CampaignConfig c, Shard shard, Options options, int threads, PrintStream out, PrintStream err)
+            throws UsageException {
         if (options.has("--record")) {
-            throw new UsageException("run: " + campaign.name() + " is a campaign, whose trials keep the recordings of"
+            throw new UsageException("run: " + c.name() + " is a campaign, whose trials keep the recordings of"
                     + " their failures only; --record all is for test suites (run, versions): drop --record.");
         }
-        CampaignConfig c = campaign;
         if (options.has("--dry-run")) {
-            out.println(CampaignRun.plan(c, threads) + ": sound; a dry run, so nothing ran and nothing was written.");
+            out.println(CampaignRun.plan(c, shard, threads) + ": sound; a dry run, so nothing ran and nothing was written.");
             return ExitCode.OK;
         }
-        Path folder = folder(options, c.name(), c.masterSeed(), c.trials(), Shard.WHOLE);
-        return new CampaignRun(drivers, threads, fork, out, err).start(c, folder);
+        Path folder = folder(options, c.name(), c.masterSeed(), c.trials(), shard);
+        return new CampaignRun(drivers, threads, fork, out, err).start(c, shard, folder);
     }
 
     /**
@@ -178,9 +181,12 @@ final class RunCommand implements Command {
                     + ResultsFolder.MANIFEST + "); name the folder whose experiment to run again.");
         }
         CampaignConfig c;
+        Shard campaignShard;
         Manifest manifest;
         try {
-            c = campaign ? CampaignManifest.read(folder).config() : null;
+            CampaignManifest cm = campaign ? CampaignManifest.read(folder) : null;
+            c = campaign ? cm.config() : null;
+            campaignShard = campaign ? cm.shard() : Shard.WHOLE;
             manifest = campaign ? null : Manifest.read(folder);
         } catch (IOException e) {
             throw new UsageException("run: cannot read " + folder + ": " + IoReason.of(e, folder) + ".");
@@ -188,7 +194,7 @@ final class RunCommand implements Command {
             throw new UsageException("run: --again " + folder + ": " + e.getMessage() + ".");
         }
         if (campaign) {
-            return campaign(c, options, threads, out, err);
+            return campaign(c, campaignShard, options, threads, out, err);
         }
         return start(manifest.config(), manifest.shard(), options, folder.resolve(ResultsFolder.MANIFEST).toString(),
                 threads, out, err);
@@ -326,6 +332,12 @@ final class RunCommand implements Command {
 
     /** The shard asked for; refused when it splits the replications into more shards than there are of them. */
     private static Shard shard(Options options, ExperimentConfig config) throws UsageException {
+        return shard(options, config.planSize(), config.name(), config.isSweep() ? "map sets" : "replications",
+                !config.isSweep());
+    }
+
+    /** The shard asked for of {@code units} {@code what}; refused when it asks for more shards than there are units. */
+    private static Shard shard(Options options, int units, String name, String what, boolean more) throws UsageException {
         if (options.value("--shard").isEmpty()) {
             return Shard.WHOLE;
         }
@@ -335,12 +347,10 @@ final class RunCommand implements Command {
         } catch (IllegalArgumentException e) {
             throw new UsageException("run: --shard: " + e.getMessage() + ".");
         }
-        int units = config.planSize();
         if (shard.n() > units) {
-            String what = config.isSweep() ? "map sets" : "replications";
-            throw new UsageException("run: --shard " + shard + ": " + config.name() + " has " + units + " " + what + ", so no"
+            throw new UsageException("run: --shard " + shard + ": " + name + " has " + units + " " + what + ", so no"
                     + " more than " + units + " shards (each needs one); use --shard K/" + units
-                    + (config.isSweep() ? "" : ", or run more with --replications N") + ".");
+                    + (more ? ", or run more with --replications N" : "") + ".");
         }
         return shard;
     }

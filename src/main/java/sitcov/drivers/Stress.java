@@ -23,11 +23,14 @@ public final class Stress {
     public static double of(Margins margins) {
         double least = Double.POSITIVE_INFINITY;
         for (AccidentType t : AccidentType.values()) {
-            double rho = margins.robustness(t);
-            if (!Double.isNaN(rho)) {
-                least = Math.min(least, rho / UNIT[t.ordinal()]);
-            }
+            least = Math.min(least, of(margins, t));
         }
         return least;
+    }
+
+    /** The normalised ρ of one accident type's requirement, for a search after that requirement alone; infinite when not known. */
+    public static double of(Margins margins, AccidentType type) {
+        double rho = margins.robustness(type);
+        return Double.isNaN(rho) ? Double.POSITIVE_INFINITY : rho / UNIT[type.ordinal()];
     }
 }

@@ -38,6 +38,10 @@ import sitcov.world.WorldMap;
  * candidate in {@link #EXPLORE_EVERY} is drawn at random and run if its cell is empty, so the archive
  * keeps growing. Every edit is paid for with a candidate of the stream, set aside, like
  * coverage-search's.
+ *
+ * <p>In the campaign of one of the reference's own requirements (experiments/README.md, "Requirement campaigns:
+ * where your controller itself fails") stress is that requirement's ρ alone, and only its failures are failures;
+ * the controller's own requirement has no ρ, so there it keeps the least over all types.
  */
 final class StressSearchDriver implements Driver {
     static final int EXPLORE_EVERY = 4;
@@ -51,6 +55,8 @@ final class StressSearchDriver implements Driver {
     }
 
     private final TreeMap<Integer, Elite> archive = new TreeMap<>();
+    /** The accident type whose ρ alone is the stress, in a requirement campaign; else the least of all counts. */
+    private Optional<AccidentType> aim = Optional.empty();
     private final Set<Integer> failed = new HashSet<>();
     private WorldMap current;
     private double currentStress;
@@ -62,6 +68,7 @@ final class StressSearchDriver implements Driver {
     @Override
     public void drive(DriverSession session) {
         RandomGenerator choose = session.choices();
+        aim = session.requirement().flatMap(r -> r.robustness());
         while (session.budgetLeft()) {
             if (archive.isEmpty() || step++ % EXPLORE_EVERY == 0) {
                 explore(session);
@@ -164,7 +171,7 @@ final class StressSearchDriver implements Driver {
     /** Whether the reference failed in this run in a way (cell × accident type) it had not failed before. */
     private boolean newFailure(MapRun run) {
         boolean any = false;
-        for (AccidentType t : AccidentType.values()) {
+        for (AccidentType t : aim.map(List::of).orElse(List.of(AccidentType.values()))) {
             if (run.faultFree().margins().robustness(t) < 0) {
                 any |= failed.add(run.cell() * AccidentType.values().length + t.ordinal());
             }
@@ -172,10 +179,14 @@ final class StressSearchDriver implements Driver {
         return any;
     }
 
+    private double stress(MapRun run) {
+        return aim.map(t -> Stress.of(run.faultFree().margins(), t)).orElseGet(() -> Stress.of(run.faultFree().margins()));
+    }
+
     /** Keeps the run's situation as its cell's elite if it is less robust; its stress. */
     private double keep(MapRun run, WorldMap map) {
         // every failure is as good as any other: the walk wanders among them, into other cells
-        double stress = Math.max(Stress.FAILED, Stress.of(run.faultFree().margins()));
+        double stress = Math.max(Stress.FAILED, stress(run));
         Elite there = archive.get(run.cell());
         if (run.cell() >= 0 && (there == null || stress < there.stress())) {
             archive.put(run.cell(), new Elite(map, stress));

@@ -31,17 +31,19 @@ sealed interface Budget {
 
     /**
      * A campaign trial's budget: {@code ticks} simulated ticks for every driver alike, ended early by
-     * the first map on which a fault is found under the differential oracle (the campaign's one fault).
-     * One instance per driver session, so its state is the session's.
+     * the first map that falsifies the campaign's target (its variant found under the differential oracle,
+     * or its requirement violated by the reference). One instance per driver session, so its state is the session's.
      */
     final class FixedTicks implements Budget {
         private final long ticks;
         private final int candidateLimit;
+        private final CampaignTarget target;
         private boolean falsified;
 
-        FixedTicks(long ticks, int candidateLimit) {
+        FixedTicks(long ticks, int candidateLimit, CampaignTarget target) {
             this.ticks = ticks;
             this.candidateLimit = candidateLimit;
+            this.target = target;
         }
 
         @Override
@@ -71,7 +73,7 @@ sealed interface Budget {
 
         @Override
         public void judged(MapRun run) {
-            falsified |= run.faults().stream().anyMatch(f -> f.found(sitcov.judge.Notion.DIFFERENTIAL));
+            falsified |= target.falsifiedOn(run);
         }
     }
 

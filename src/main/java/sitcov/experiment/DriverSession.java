@@ -6,6 +6,7 @@ import java.util.function.Supplier;
 import java.util.random.RandomGenerator;
 import sitcov.coverage.CoverageGrid;
 import sitcov.coverage.GridDefinition;
+import sitcov.judge.Requirement;
 import sitcov.world.Layout;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
@@ -102,6 +103,14 @@ public final class DriverSession {
     /** The stream of this driver's own choices in this replication (which situation to edit, how). */
     public RandomGenerator choices() {
         return choices;
+    }
+
+    /**
+     * The reference's own requirement this session's campaign trial falsifies, for a driver that steers by how
+     * near the reference came to violating it; empty for every other experiment.
+     */
+    public Optional<Requirement> requirement() {
+        return host.config().requirement();
     }
 
     /** Whether a map this driver ran already fills {@code cell}. */

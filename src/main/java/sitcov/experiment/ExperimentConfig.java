@@ -4,10 +4,12 @@ import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.Set;
 import sitcov.coverage.GridDefinition;
 import sitcov.faults.Fault;
 import sitcov.judge.FaultyRuns;
+import sitcov.judge.Requirement;
 import sitcov.judge.Variant;
 
 /**
@@ -17,12 +19,13 @@ import sitcov.judge.Variant;
  * candidate budget of the sweep and map set, with {@code replications} map sets per budget.
  * {@code analysis} declares how a comparison's results are judged. A campaign's trials of one fault
  * (budget {@code fixed-ticks}): every driver gets {@code tickBudget} ticks per replication (0 for
- * every other budget), with {@code candidates} only its safety limit.
+ * every other budget), with {@code candidates} only its safety limit; they falsify its one variant, or,
+ * with no variant, the reference's own {@code requirement} (empty for every other experiment).
  */
 public record ExperimentConfig(String name, long masterSeed, int candidates, int replications, List<Variant> variants,
                                BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
                                int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis, String controller,
-                               long tickBudget) {
+                               long tickBudget, Optional<Requirement> requirement) {
     /** The controller an experiment tests unless its preset names another. */
     public static final String BUILTIN = "builtin";
 
@@ -72,9 +75,14 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
             throw new IllegalArgumentException("a tick budget goes with the fixed-ticks budget of a campaign, and only"
                     + " with it (got budget " + budget.key() + ", tick budget " + tickBudget + ")");
         }
-        if (budget == BudgetKind.FIXED_TICKS && (variants.size() != 1 || !sweep.isEmpty())) {
-            throw new IllegalArgumentException("a campaign's trials falsify one variant and sweep nothing, got "
-                    + variants.size() + " variants and sweep " + sweep);
+        Objects.requireNonNull(requirement, "requirement");
+        int targets = variants.size() + (requirement.isPresent() ? 1 : 0);
+        if (budget == BudgetKind.FIXED_TICKS && (targets != 1 || !sweep.isEmpty())) {
+            throw new IllegalArgumentException("a campaign's trials falsify one variant or one requirement and sweep"
+                    + " nothing, got " + variants.size() + " variants, requirement " + requirement + " and sweep " + sweep);
+        }
+        if (budget != BudgetKind.FIXED_TICKS && requirement.isPresent()) {
+            throw new IllegalArgumentException("only a campaign's trials falsify a requirement");
         }
         variants = List.copyOf(variants);
         if (variants.stream().map(Variant::id).distinct().count() != variants.size()) {
@@ -82,6 +90,15 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
         }
         drivers = List.copyOf(drivers);
         sweep = List.copyOf(sweep);
+    }
+
+    /** Anything but a requirement campaign's trials. */
+    public ExperimentConfig(String name, long masterSeed, int candidates, int replications, List<Variant> variants,
+                            BudgetKind budget, GridDefinition grid, List<String> drivers, List<Integer> sweep,
+                            int candidateLimit, FaultyRuns faultyRuns, AnalysisPlan analysis, String controller,
+                            long tickBudget) {
+        this(name, masterSeed, candidates, replications, variants, budget, grid, drivers, sweep, candidateLimit, faultyRuns,
+                analysis, controller, tickBudget, Optional.empty());
     }
 
     /** Any budget but a campaign's fixed ticks. */
@@ -103,13 +120,13 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
     /** The same experiment testing the controller {@code spec} names ({@code builtin} or {@code exec:COMMAND ARGS…}). */
     public ExperimentConfig withController(String spec) {
         return new ExperimentConfig(name, masterSeed, candidates, replications, variants, budget, grid, drivers, sweep,
-                candidateLimit, faultyRuns, analysis, spec, tickBudget);
+                candidateLimit, faultyRuns, analysis, spec, tickBudget, requirement);
     }
 
     /** The same experiment judging {@code others} as the reference's variants. */
     public ExperimentConfig withVariants(List<Variant> others) {
         return new ExperimentConfig(name, masterSeed, candidates, replications, others, budget, grid, drivers, sweep,
-                candidateLimit, faultyRuns, analysis, controller, tickBudget);
+                candidateLimit, faultyRuns, analysis, controller, tickBudget, requirement);
     }
 
     /** The default analysis: distinct faults found, the first driver against the second, default margins. */
@@ -131,6 +148,15 @@ public record ExperimentConfig(String name, long masterSeed, int candidates, int
     public static int defaultCandidateLimit(int candidates, List<Integer> sweep) {
         long largest = sweep.stream().mapToInt(Integer::intValue).max().orElse(candidates);
         return (int) Math.min(Integer.MAX_VALUE, largest * 10L);
+    }
+
+    /** What a campaign's trials falsify: the reference's requirement, else its one variant. */
+    public CampaignTarget target() {
+        if (budget != BudgetKind.FIXED_TICKS) {
+            throw new IllegalStateException(name + " is not a campaign's trials");
+        }
+        return requirement.<CampaignTarget>map(CampaignTarget.OfRequirement::new)
+                .orElseGet(() -> new CampaignTarget.OfVariant(variants.get(0)));
     }
 
     /** The builtin car's seeded faults, each a variant, in id order: the order of every per-fault column. */

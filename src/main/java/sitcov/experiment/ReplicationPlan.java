@@ -14,6 +14,8 @@ final class ReplicationPlan {
     private final BudgetKind kind;
     private final int candidateLimit;
     private final long tickBudget;
+    /** What a campaign's trial falsifies; empty in the suites. */
+    private final java.util.Optional<CampaignTarget> target;
     private final Lead lead = new Lead();
     private final SharedMaps shared;
     private final AtomicInteger driversLeft;
@@ -23,6 +25,7 @@ final class ReplicationPlan {
         this.kind = config.budget();
         this.candidateLimit = config.candidateLimit();
         this.tickBudget = config.tickBudget();
+        this.target = kind == BudgetKind.FIXED_TICKS ? java.util.Optional.of(config.target()) : java.util.Optional.empty();
         this.shared = new SharedMaps(replication.index());
         this.driversLeft = new AtomicInteger(config.drivers().size());
     }
@@ -50,7 +53,7 @@ final class ReplicationPlan {
         return switch (kind) {
             case TICKS -> new Budget.TicksOfLead(lead, candidateLimit);
             case WALL_CLOCK -> new Budget.WallClockOfLead(lead, candidateLimit);
-            case FIXED_TICKS -> new Budget.FixedTicks(tickBudget, candidateLimit);
+            case FIXED_TICKS -> new Budget.FixedTicks(tickBudget, candidateLimit, target.orElseThrow());
         };
     }
 

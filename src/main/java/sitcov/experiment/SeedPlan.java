@@ -2,6 +2,7 @@ package sitcov.experiment;
 
 import java.util.random.RandomGenerator;
 import sitcov.engine.RandomStreams;
+import sitcov.judge.Requirement;
 
 /**
  * Where every seed of an experiment comes from; nothing else derives one. From the master seed M:
@@ -18,7 +19,9 @@ import sitcov.engine.RandomStreams;
  *   own named streams ({@link sitcov.world.MapGenerator}, {@link sitcov.engine.SimState});</li>
  * <li>the campaign of fault f (experiments/README.md, "Campaigns: falsifying one version") is an experiment of its
  *   own whose master seed is {@code mix(M, "campaign-fault-" + f)}, every rule above applied to it,
- *   so the trials of different faults read different candidates;</li>
+ *   so the trials of different faults read different candidates; the campaign of the reference's own
+ *   requirement r (experiments/README.md, "Requirement campaigns: where your controller itself fails") likewise
+ *   {@code mix(M, "campaign-requirement-" + r)}, r its key;</li>
  * <li>a driver's own choices (a search's: which situation to edit, how) come from stream
  *   {@code choices:DRIVER} of {@code M} derived by the replication's label;</li>
  * <li>the analysis of the results (bootstrap resamples, permutations) draws from stream
@@ -61,6 +64,11 @@ public final class SeedPlan {
     /** The master seed of the campaign for variant {@code variantId} (a seeded fault's id): its trials' seeds derive from it. */
     public static long campaignSeed(long masterSeed, int variantId) {
         return RandomStreams.mix(masterSeed, "campaign-fault-" + variantId);
+    }
+
+    /** The master seed of the campaign of the reference's own {@code requirement}: its trials' seeds derive from it. */
+    public static long campaignSeed(long masterSeed, Requirement requirement) {
+        return RandomStreams.mix(masterSeed, "campaign-requirement-" + requirement.key());
     }
 
     /** The internal seed a map runs with: fixed by the master seed and the map, whichever driver runs it. */

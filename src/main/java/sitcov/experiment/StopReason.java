@@ -10,7 +10,7 @@ public enum StopReason {
     WALL_CLOCK("wall-clock"),
     /** A later driver drew {@code candidate_limit} candidates before spending its budget (it ran too few maps). */
     CANDIDATE_LIMIT("candidate-limit"),
-    /** A campaign's trial judged a map that found its fault. */
+    /** A campaign's trial judged a map that falsified its target: found its fault, or violated its requirement. */
     FALSIFIED("falsified"),
     /** The driver ended its share before its budget was spent (it had nothing left to run). */
     DRIVER("driver");

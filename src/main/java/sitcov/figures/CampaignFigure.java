@@ -9,12 +9,12 @@ import java.nio.file.Path;
 import java.util.List;
 import sitcov.analysis.CampaignAnalysis;
 import sitcov.analysis.CampaignTrial;
-import sitcov.judge.Variant;
+import sitcov.experiment.CampaignTarget;
 import sitcov.render.MapRenderer;
 import sitcov.stats.KaplanMeier;
 
 /**
- * A campaign's figure (experiments/README.md, "Campaigns: falsifying one version"): per fault a small panel of the
+ * A campaign's figure (experiments/README.md, "Campaigns: falsifying one version"): per target a small panel of the
  * Kaplan–Meier curves of the share of trials not yet falsified against ticks, one curve per driver, a
  * tick mark where a trial was censored (its budget spent, or it stopped, without a failure).
  */
@@ -36,7 +36,7 @@ public final class CampaignFigure {
     }
 
     static BufferedImage render(CampaignAnalysis a) {
-        List<Variant> faults = a.config().variants();
+        List<CampaignTarget> faults = a.config().targets();
         List<String> drivers = a.config().drivers();
         int cols = Math.min(COLUMNS, faults.size());
         int rows = (faults.size() + cols - 1) / cols;
@@ -48,18 +48,18 @@ public final class CampaignFigure {
             ExperimentFigures.title(g, "Share of trials not yet falsified against simulated ticks (Kaplan–Meier)");
             Chart.legendRow(g, 20, 55, drivers.toArray(String[]::new), Chart.drivers(drivers.size()));
             g.setColor(Color.DARK_GRAY);
-            g.drawString(a.config().trials() + " trials per driver and fault; a bar | marks a trial censored (its "
+            g.drawString(a.config().trials() + " trials per driver and " + a.config().noun() + "; a bar | marks a trial censored (its "
                     + a.config().tickBudget() + " ticks spent, or stopped, with no failure)", 20, 75);
             // both axes padded: a curve at 1, or a censored trial at the budget, stays inside the frame
             // in thousands of ticks, so the labels of a budget of 100 000s fit under a small panel
             Axis x = Axis.upTo(a.config().tickBudget() / THOUSAND).padded();
             Axis y = Axis.steps(0.25, 4).padded();
             for (int i = 0; i < faults.size(); i++) {
-                Variant f = faults.get(i);
+                CampaignTarget f = faults.get(i);
                 int left = LEFT + (i % cols) * (PANEL_W + GAP_W);
                 int top = TOP + 20 + (i / cols) * (PANEL_H + GAP_H);
                 Chart chart = new Chart(g, left, top, PANEL_W, PANEL_H, x, y);
-                chart.axes("fault " + f.id() + " (" + f.label() + ")", "thousand ticks", "not yet falsified");
+                chart.axes(f.title(), "thousand ticks", "not yet falsified");
                 for (int d = 0; d < drivers.size(); d++) {
                     List<CampaignTrial> trials = CampaignAnalysis.of(a.trials(), f, drivers.get(d));
                     curve(chart, g, trials, a.config().tickBudget(), Chart.driver(d), Chart.shift(d, drivers.size()));

@@ -18,31 +18,49 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.CampaignTarget;
 import sitcov.experiment.ExperimentConfig;
+import sitcov.experiment.Shard;
 import sitcov.faults.FaultSet;
 import sitcov.judge.FaultyRuns;
+import sitcov.judge.Requirement;
 import sitcov.judge.Variant;
 import sitcov.judge.VariantList;
 
 /**
  * {@code campaign.properties}: what fixes a campaign's results folder (experiments/README.md, "Campaigns: falsifying
- * one version") and whether it is complete. Each fault's sub-folder has its own manifest, checked
- * against the one this one implies, so a campaign folder is resumed or reported from it alone.
+ * one version"), which shard of its trials it holds, and whether it is complete. Each target's sub-folder has its own
+ * manifest, checked against the one this one implies, so a campaign folder is resumed, reported or merged from it alone.
  *
- * <p>Its {@code checks} line guards it as a manifest's does ({@link ManifestChecks}): a fault dropped from
+ * <p>Its {@code checks} line guards it as a manifest's does ({@link ManifestChecks}): a target dropped from
  * it by hand would otherwise pass, since the sub-folders left are each checked only against it.
  * {@code checked} is false for a folder written before campaigns were checked: it is read, and
  * written again, without them.
  */
-public record CampaignManifest(CampaignConfig config, String version, boolean complete, boolean checked) {
+public record CampaignManifest(CampaignConfig config, String version, Shard shard, boolean complete, boolean checked) {
     public static final String FILE = ResultsFolder.CAMPAIGN_MANIFEST;
     private static final String HEADER = "# sitcov campaign manifest";
-    /** The sub-folders a campaign writes: one a variant ({@link CampaignConfig#folderOf}). */
-    private static final Pattern SUB_FOLDER = Pattern.compile("(fault|variant)-\\d+");
+    /** The sub-folders a campaign writes: one a target ({@link CampaignTarget#folder}). */
+    private static final Pattern SUB_FOLDER = Pattern.compile("(fault|variant)-\\d+|requirement-[a-z]+");
 
-    /** A manifest with checks, as every campaign is written now. */
+    /** The manifest of a whole campaign, with checks, as every campaign is written now. */
     public CampaignManifest(CampaignConfig config, String version, boolean complete) {
-        this(config, version, complete, true);
+        this(config, version, Shard.WHOLE, complete, true);
+    }
+
+    /** The manifest of one shard of a campaign, with checks. */
+    public CampaignManifest(CampaignConfig config, String version, Shard shard, boolean complete) {
+        this(config, version, shard, complete, true);
+    }
+
+    /** Whether {@code other} is a folder of the same campaign, whatever shard each holds and whether it is complete. */
+    public boolean sameCampaign(CampaignManifest other) {
+        return whole().complete(false).lines().equals(other.whole().complete(false).lines());
+    }
+
+    /** The same campaign, whole and checked: what merging its shards makes. */
+    public CampaignManifest whole() {
+        return new CampaignManifest(config, version, Shard.WHOLE, complete, true);
     }
 
     /** Whether {@code folder} holds a campaign (rather than one experiment). */
@@ -51,7 +69,7 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
     }
 
     public CampaignManifest complete(boolean done) {
-        return new CampaignManifest(config, version, done, checked);
+        return new CampaignManifest(config, version, shard, done, checked);
     }
 
     List<String> lines() {
@@ -60,10 +78,15 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
         m.put("preset", c.name());
         m.put("sitcov_version", version);
         m.put("master_seed", Long.toString(c.masterSeed()));
-        if (c.onlySeeded()) {
+        if (c.onRequirements()) {
+            m.put("requirements", Requirement.format(c.requirements()));
+        } else if (c.onlySeeded()) {
             m.put("faults", FaultSet.format(Set.copyOf(Variant.faultsOf(c.variants()))));
         } else {
             m.put("variants", VariantList.format(c.variants()));
+        }
+        if (!shard.isWhole()) {
+            m.put("shard", shard.toString());
         }
         m.put("drivers", String.join(",", c.drivers()));
         m.put("trials", Integer.toString(c.trials()));
@@ -103,34 +126,39 @@ public record CampaignManifest(CampaignConfig config, String version, boolean co
             ManifestChecks.verify(text, file, fix);
         }
         CampaignConfig c;
+        Shard shard;
         try {
             GridDefinition grid = GridDefinition.read(folder.resolve(ResultsFolder.GRID));
             if (!Manifest.sha256(grid.format()).equals(required(p, "grid_sha256"))) {
                 throw new IllegalArgumentException(ResultsFolder.GRID + " does not match grid_sha256: the grid was edited");
             }
+            List<CampaignTarget> targets = p.containsKey("requirements")
+                    ? CampaignConfig.ofRequirements(Stream.of(p.getProperty("requirements").split(","))
+                            .map(Requirement::ofKey).toList())
+                    : CampaignConfig.ofVariants(p.containsKey("variants") ? VariantList.parse(p.getProperty("variants"))
+                            : ExperimentConfig.seeded(FaultSet.parse(required(p, "faults"))));
             c = new CampaignConfig(required(p, "preset"), Long.parseLong(required(p, "master_seed")),
-                    p.containsKey("variants") ? VariantList.parse(p.getProperty("variants"))
-                            : ExperimentConfig.seeded(FaultSet.parse(required(p, "faults"))),
-                    List.of(required(p, "drivers").split(",")),
+                    targets, List.of(required(p, "drivers").split(",")),
                     Integer.parseInt(required(p, "trials")), Long.parseLong(required(p, "tick_budget")),
                     Integer.parseInt(required(p, "candidate_limit")), grid, FaultyRuns.ofKey(required(p, "faulty_runs")),
                     required(p, "controller"));
+            shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
         } catch (NoSuchFileException e) {
             throw new IllegalArgumentException(folder + " lacks " + e.getFile() + "; it is not a whole campaign folder");
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException(file + ": " + e.getMessage(), e);
         }
         unlisted(folder, c).ifPresent(sub -> {
-            throw new IllegalArgumentException(file + " lists no variant of " + folder.resolve(sub) + ", a sub-folder the"
+            throw new IllegalArgumentException(file + " lists no target of " + folder.resolve(sub) + ", a sub-folder the"
                     + " campaign wrote: the file was changed after sitcov wrote it; " + fix);
         });
-        return new CampaignManifest(c, required(p, "sitcov_version"), Boolean.parseBoolean(required(p, "complete")),
+        return new CampaignManifest(c, required(p, "sitcov_version"), shard, Boolean.parseBoolean(required(p, "complete")),
                 p.containsKey(ManifestChecks.CHECKS));
     }
 
-    /** A sub-folder of the campaign's kind that none of its variants names: what a variant dropped by hand leaves. */
+    /** A sub-folder of the campaign's kind that none of its targets names: what a target dropped by hand leaves. */
     private static Optional<String> unlisted(Path folder, CampaignConfig c) throws IOException {
-        Set<String> listed = c.variants().stream().map(CampaignConfig::folderOf).collect(Collectors.toSet());
+        Set<String> listed = c.targets().stream().map(CampaignTarget::folder).collect(Collectors.toSet());
         try (Stream<Path> entries = Files.list(folder)) {
             return entries.filter(Files::isDirectory).map(d -> d.getFileName().toString())
                     .filter(n -> SUB_FOLDER.matcher(n).matches() && !listed.contains(n)).sorted().findFirst();

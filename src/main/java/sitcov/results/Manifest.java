@@ -13,6 +13,7 @@ import java.util.Arrays;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Properties;
 import java.util.TreeMap;
 import sitcov.coverage.GridDefinition;
@@ -23,6 +24,7 @@ import sitcov.experiment.Shard;
 import sitcov.faults.FaultSet;
 import sitcov.judge.VariantList;
 import sitcov.judge.FaultyRuns;
+import sitcov.judge.Requirement;
 
 /**
  * {@code manifest.properties}: everything that fixes an experiment's results (the configuration,
@@ -128,6 +130,7 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         if (c.tickBudget() > 0) {
             m.put("tick_budget", Long.toString(c.tickBudget()));
         }
+        c.requirement().ifPresent(r -> m.put("requirement", r.key()));
         m.put("faulty_runs", c.faultyRuns().key());
         if (!c.controller().equals(ExperimentConfig.BUILTIN)) {
             m.put("controller", c.controller());
@@ -200,7 +203,9 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
                     // folders written before the analysis was declared are judged by its defaults
                     AnalysisPlan.read(p::getProperty, drivers),
                     p.getProperty("controller", ExperimentConfig.BUILTIN),
-                    Long.parseLong(p.getProperty("tick_budget", "0").strip()));
+                    Long.parseLong(p.getProperty("tick_budget", "0").strip()),
+                    p.containsKey("requirement") ? Optional.of(Requirement.ofKey(p.getProperty("requirement")))
+                            : Optional.empty());
             Shard shard = p.containsKey("shard") ? Shard.parse(p.getProperty("shard")) : Shard.WHOLE;
             return new Manifest(config, required(p, "sitcov_version"), shard,
                     Boolean.parseBoolean(required(p, COMPLETE)), Boolean.parseBoolean(p.getProperty("resumed", "false")),

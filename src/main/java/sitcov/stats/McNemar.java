@@ -11,6 +11,14 @@ public final class McNemar {
     private McNemar() {
     }
 
+    /**
+     * The smallest two-sided p any split of {@code discordant} pairs can give: 2·½ⁿ (all one way), capped at
+     * 1. Below 6 discordant pairs it is above 0.05 (0.0625 for 5), so such a test cannot show a difference.
+     */
+    public static double smallestP(long discordant) {
+        return exactP(discordant, 0);
+    }
+
     public static double exactP(long b, long c) {
         if (b < 0 || c < 0) {
             throw new IllegalArgumentException("counts of discordant pairs are not negative, got " + b + " and " + c);

@@ -64,8 +64,8 @@ public final class CampaignVerdict {
                 boolean aAhead = logRank ? t.logRank().observedA() > t.logRank().expectedA() : t.falsifiedA() > t.falsifiedB();
                 String ahead = aAhead ? t.a() : t.b();
                 String behind = aAhead ? t.b() : t.a();
-                shown.add(String.format(Locale.ROOT, "fault %d: %s ahead of %s (%d against %d trials falsified%s%s)",
-                        t.fault().id(), ahead, behind, aAhead ? t.falsifiedA() : t.falsifiedB(),
+                shown.add(String.format(Locale.ROOT, "fault %s: %s ahead of %s (%d against %d trials falsified%s%s)",
+                        t.fault().key(), ahead, behind, aAhead ? t.falsifiedA() : t.falsifiedB(),
                         aAhead ? t.falsifiedB() : t.falsifiedA(),
                         fisher ? ", Fisher Holm p = " + VerdictText.p(t.fisherHolm()) : "",
                         logRank ? ", log-rank Holm p = " + VerdictText.p(t.logRankHolm()) : ""));

@@ -11,6 +11,7 @@ import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.CampaignTarget;
 import sitcov.experiment.MapId;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.StopReason;
@@ -32,6 +33,7 @@ class CampaignAnalysisTest {
     private static final sitcov.judge.Variant Y = new sitcov.judge.Variant.Seeded(Fault.ofId(4));
 
     private static CampaignTrial trial(sitcov.judge.Variant f, String driver, int trial, boolean falsified, long ticks) {
+        CampaignTarget target = new CampaignTarget.OfVariant(f);
         Optional<MapRun> found = Optional.empty();
         if (falsified) {
             List<Long> none = Collections.nCopies(AccidentType.values().length, 0L);
@@ -41,13 +43,13 @@ class CampaignAnalysisTest {
             found = Optional.of(new MapRun(trial, driver, 0, 0, new MapId.Seeded(trial), trial, trial, trial, List.of(), run,
                     List.of(hit)));
         }
-        return new CampaignTrial(f, driver, trial, 7, "replication-" + trial, falsified, ticks, ticks, 1,
+        return new CampaignTrial(target, driver, trial, 7, "replication-" + trial, falsified, ticks, ticks, 1,
                 falsified ? StopReason.FALSIFIED : StopReason.TICKS, found,
                 falsified ? Optional.of(sitcov.oracle.Failure.LEAVEROAD) : Optional.empty());
     }
 
     private static CampaignAnalysis analysis() {
-        CampaignConfig config = new CampaignConfig("c", 1, List.of(X, Y), List.of("a", "b"), 3, 100, 10,
+        CampaignConfig config = new CampaignConfig("c", 1, CampaignConfig.ofVariants(List.of(X, Y)), List.of("a", "b"), 3, 100, 10,
                 GridDefinition.paper(), FaultyRuns.UNTIL_VERDICT, "builtin");
         List<CampaignTrial> trials = new ArrayList<>();
         for (int t = 0; t < 3; t++) {
@@ -62,7 +64,7 @@ class CampaignAnalysisTest {
     @Test
     void eachDriverHasItsFalsifiedTrialsKaplanMeierMedianAndDistinctFailures() {
         CampaignAnalysis.DriverResult ax = analysis().drivers().get(0);
-        assertEquals(X, ax.fault());
+        assertEquals(new CampaignTarget.OfVariant(X), ax.target());
         assertEquals("a", ax.driver());
         assertEquals(3, ax.falsified());
         // survival 2/3 after 10, 1/3 after 20: the first time at or below one half is 20

@@ -12,12 +12,12 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import sitcov.builtin.BuiltinCar;
 import sitcov.drivers.Drivers;
 import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.CampaignTarget;
 import sitcov.experiment.ExperimentConfig;
 import sitcov.experiment.ExperimentEvent;
 import sitcov.experiment.ExperimentRunner;
@@ -26,7 +26,6 @@ import sitcov.faults.Fault;
 import sitcov.report.ResultsRecorder;
 import sitcov.results.CampaignManifest;
 import sitcov.results.Manifest;
-import sitcov.results.ResultsFolder;
 
 class CampaignRunTest {
     private static final String TINY = "src/test/resources/presets/campaign-tiny.properties";
@@ -151,9 +150,9 @@ class CampaignRunTest {
     }
 
     /** Starts the campaign's trials of {@code fault} into its sub-folder as run does, stopped as a kill would after {@code maps} maps. */
-    private static void killed(CampaignConfig campaign, Path folder, sitcov.judge.Variant fault, int maps) throws Exception {
+    private static void killed(CampaignConfig campaign, Path folder, CampaignTarget fault, int maps) throws Exception {
         ExperimentConfig config = campaign.trialsOf(fault);
-        ResultsRecorder recorder = ResultsRecorder.create(folder.resolve(CampaignConfig.folderOf(fault)),
+        ResultsRecorder recorder = ResultsRecorder.create(folder.resolve(fault.folder()),
                 new Manifest(config, Version.current(), Shard.WHOLE, false, false), Map.of(), System::nanoTime, BuiltinCar.FACTORY);
         ExperimentRunner[] runner = new ExperimentRunner[1];
         int[] judged = {0};
@@ -177,10 +176,10 @@ class CampaignRunTest {
             Files.createDirectories(folder);
             new CampaignManifest(campaign, Version.current(), false).write(folder);
             for (int before = 0; before < f; before++) {
-                String sub = CampaignConfig.folderOf(campaign.variants().get(before));
+                String sub = campaign.targets().get(before).folder();
                 ResultsFolders.copy(reference().resolve(sub), folder.resolve(sub));
             }
-            killed(campaign, folder, campaign.variants().get(f), f == 0 ? 5 : 3);
+            killed(campaign, folder, campaign.targets().get(f), f == 0 ? 5 : 3);
             // a kill while the campaign's own files were written whole leaves a temporary copy: resume sweeps it
             Files.writeString(folder.resolve(".campaign.csv77.tmp"), "fault,driv");
             CliRunner r = CliRunner.run("run", "--resume", folder.toString(), "--threads", "2");
@@ -239,7 +238,7 @@ class CampaignRunTest {
                 List.of("run", "--resume", folder.toString(), "--threads", "1"))) {
             CliRunner r = CliRunner.run(args.toArray(String[]::new));
             assertEquals(ExitCode.USAGE, r.exitCode(), args + ": " + r.err());
-            assertTrue(r.err().contains(manifest + " lists no variant of " + folder.resolve("fault-08")), r.err());
+            assertTrue(r.err().contains(manifest + " lists no target of " + folder.resolve("fault-08")), r.err());
         }
         assertTrue(Files.readString(manifest).contains("\ncomplete=false\n"), "still incomplete");
         assertArrayEquals(verdict, Files.readAllBytes(folder.resolve("verdict.txt")), "nothing was rewritten");
@@ -285,21 +284,7 @@ class CampaignRunTest {
 
     /** Every result file of the two campaign folders, sub-folders included, is the same byte for byte. */
     static void assertSame(Path expected, Path actual) throws IOException {
-        List<String> files = resultFiles(expected);
-        assertTrue(files.contains("campaign.csv") && files.contains("fault-17/runs.csv"), "a campaign folder: " + files);
-        assertEquals(files, resultFiles(actual));
-        for (String f : files) {
-            assertArrayEquals(Files.readAllBytes(expected.resolve(f)), Files.readAllBytes(actual.resolve(f)),
-                    f + " differs between " + expected + " and " + actual);
-        }
-    }
-
-    private static List<String> resultFiles(Path folder) throws IOException {
-        try (Stream<Path> s = Files.walk(folder)) {
-            return s.filter(Files::isRegularFile)
-                    .filter(p -> !ResultsFolder.TIMED.contains(p.getFileName().toString())
-                            && !p.getFileName().toString().equals(ResultsFolder.LOCK))
-                    .map(p -> folder.relativize(p).toString().replace('\\', '/')).sorted().toList();
-        }
+        assertTrue(ResultsFolders.campaignFiles(expected).contains("fault-17/runs.csv"), "a campaign folder of fault 17");
+        ResultsFolders.assertSameCampaign(expected, actual);
     }
 }

@@ -62,4 +62,25 @@ final class ResultsFolders {
                     f + " differs between " + expected + " and " + actual);
         }
     }
+
+    /** The files of a campaign's folder that hold results, its sub-folders' included: every file but timed ones and locks. */
+    static List<String> campaignFiles(Path folder) throws IOException {
+        try (Stream<Path> s = Files.walk(folder)) {
+            return s.filter(Files::isRegularFile)
+                    .filter(p -> !ResultsFolder.TIMED.contains(p.getFileName().toString())
+                            && !p.getFileName().toString().equals(ResultsFolder.LOCK))
+                    .map(p -> folder.relativize(p).toString().replace('\\', '/')).sorted().toList();
+        }
+    }
+
+    /** Asserts that two campaign folders hold the same result files, sub-folders included, byte for byte. */
+    static void assertSameCampaign(Path expected, Path actual) throws IOException {
+        List<String> files = campaignFiles(expected);
+        assertTrue(files.contains(ResultsFolder.CAMPAIGN_TRIALS), expected + " holds no campaign.csv");
+        assertEquals(files, campaignFiles(actual), "the result files of " + actual);
+        for (String f : files) {
+            assertArrayEquals(Files.readAllBytes(expected.resolve(f)), Files.readAllBytes(actual.resolve(f)),
+                    f + " differs between " + expected + " and " + actual);
+        }
+    }
 }

@@ -16,6 +16,7 @@ import sitcov.experiment.ReplicationResult;
 import sitcov.experiment.ResultsCollector;
 import sitcov.faults.FaultSet;
 import sitcov.judge.FaultyRuns;
+import sitcov.judge.Requirement;
 
 class StressSearchDriverTest {
     private static ExperimentConfig search(String faults) {
@@ -62,5 +63,27 @@ class StressSearchDriverTest {
     @Test
     void theSearchIsTheSameOnEveryRun() {
         assertEquals(WITH_19, ResultsCollector.run(search("19"), Drivers.standard(), 2));
+    }
+
+    /** The search alone in the trial of a campaign of the reference's own {@code requirement}, master seed 42. */
+    private static DriverRun falsifying(Requirement requirement) {
+        ExperimentConfig c = new ExperimentConfig("req", 42, 1000, 1, List.of(), BudgetKind.FIXED_TICKS, GridDefinition.paper(),
+                List.of("stress-search"), List.of(), 1000, FaultyRuns.UNTIL_VERDICT,
+                sitcov.experiment.AnalysisPlan.defaults(List.of("stress-search")), "builtin", 8000,
+                java.util.Optional.of(requirement));
+        return ResultsCollector.run(c, Drivers.standard(), 1).get(0).of("stress-search");
+    }
+
+    @Test
+    void inARequirementCampaignTheSearchSteersByThatRequirementsRobustnessAlone() {
+        DriverRun edge = falsifying(Requirement.LEAVEROAD);
+        DriverRun centre = falsifying(Requirement.CENTRELINE);
+        // the same candidate stream and choices stream: only what the search reads as stress differs
+        assertEquals(choices(edge).subList(0, 1), choices(centre).subList(0, 1), "the first map is drawn, not chosen");
+        // compared over the maps both ran: a trial stops at its first violation, which may come sooner for one
+        int both = Math.min(edge.maps().size(), centre.maps().size());
+        assertNotEquals(choices(edge).subList(0, both), choices(centre).subList(0, both),
+                "stress read from the road's edge or from the centre line");
+        assertEquals(choices(edge), choices(falsifying(Requirement.LEAVEROAD)));
     }
 }

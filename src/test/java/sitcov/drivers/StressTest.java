@@ -22,4 +22,12 @@ class StressTest {
         assertEquals(-0.5, Stress.of(new Margins(NEAR, List.of(INF, 0.5, -0.1, 0.01, Double.NaN))), 1e-12);
         assertEquals(INF, Stress.of(Margins.UNKNOWN));
     }
+
+    @Test
+    void oneRequirementsStressIsItsOwnRobustnessInItsUnit() {
+        Margins m = new Margins(NEAR, List.of(INF, 0.5, 0.1, 0.01, Double.NaN));
+        assertEquals(0.5, Stress.of(m, sitcov.oracle.AccidentType.LEAVEROAD), 1e-12, "0.1 m / 0.2 m");
+        assertEquals(0.2, Stress.of(m, sitcov.oracle.AccidentType.CROSSCENTRELINE), 1e-12, "0.01 m / 0.05 m");
+        assertEquals(INF, Stress.of(m, sitcov.oracle.AccidentType.TIMEOUT), "not known");
+    }
 }

@@ -58,4 +58,50 @@ class KaplanMeierTest {
         assertTrue(KaplanMeier.median(curve).isEmpty());
         assertTrue(KaplanMeier.curve(List.of(new KaplanMeier.Observation(5, false))).isEmpty());
     }
+
+    private static List<KaplanMeier.Observation> observations(double[] times, boolean[] events) {
+        List<KaplanMeier.Observation> out = new ArrayList<>();
+        for (int i = 0; i < times.length; i++) {
+            out.add(new KaplanMeier.Observation(times[i], events[i]));
+        }
+        return out;
+    }
+
+    @Test
+    void theMedianIntervalOfFiveEventsSpansTheirFirstToTheirLast() {
+        // S = 0.8, 0.6, 0.4, 0.2, 0 at 1..5; Greenwood sums 1/20, +1/12, +1/6, +1/2, then S = 0 (se 0).
+        // At t = 1: se = 0.8 * sqrt(0.05) = 0.1789, S - 1.96 se = 0.449 <= 0.5: the lower end is 1.
+        // S + 1.96 se: 1.151, 1.029, 0.829, 0.551 at 1..4, and 0 at 5: the upper end is 5. The median is 3.
+        List<KaplanMeier.Step> curve = KaplanMeier.curve(observations(new double[] {1, 2, 3, 4, 5},
+                new boolean[] {true, true, true, true, true}));
+        KaplanMeier.MedianInterval ci = KaplanMeier.medianInterval(curve, 1.959964);
+        assertEquals(3, KaplanMeier.median(curve).getAsDouble(), 1e-12);
+        assertEquals(1, ci.low().getAsDouble(), 1e-12);
+        assertEquals(5, ci.high().getAsDouble(), 1e-12);
+    }
+
+    @Test
+    void theMedianIntervalWithCensoredTimesFollowsGreenwoodsVariance() {
+        // 2, 3+, 4, 5+, 6, 7 (+ censored). S(2) = 5/6, Greenwood 1/30: se 0.1521, S - 1.96 se = 0.535 > 0.5.
+        // S(4) = 5/6 * 3/4 = 0.625, Greenwood 1/30 + 1/12 = 0.1167: se 0.2135, S - 1.96 se = 0.207: the lower end is 4.
+        // S(6) = 0.3125 (the median), Greenwood + 1/2 = 0.6167: se 0.2454, S + 1.96 se = 0.794 > 0.5.
+        // S(7) = 0, se 0: the upper end is 7.
+        List<KaplanMeier.Step> curve = KaplanMeier.curve(observations(new double[] {2, 3, 4, 5, 6, 7},
+                new boolean[] {true, false, true, false, true, true}));
+        KaplanMeier.MedianInterval ci = KaplanMeier.medianInterval(curve, 1.959964);
+        assertEquals(6, KaplanMeier.median(curve).getAsDouble(), 1e-12);
+        assertEquals(4, ci.low().getAsDouble(), 1e-12);
+        assertEquals(7, ci.high().getAsDouble(), 1e-12);
+    }
+
+    @Test
+    void anIntervalEndThatItsBandNeverReachesIsNotReached() {
+        // 1 event in 4, the rest censored: S = 0.75 with se 0.2165, S - 1.96 se = 0.326 <= 0.5, S + 1.96 se never is
+        List<KaplanMeier.Step> curve = KaplanMeier.curve(observations(new double[] {1, 9, 9, 9},
+                new boolean[] {true, false, false, false}));
+        KaplanMeier.MedianInterval ci = KaplanMeier.medianInterval(curve, 1.959964);
+        assertTrue(KaplanMeier.median(curve).isEmpty());
+        assertEquals(1, ci.low().getAsDouble(), 1e-12);
+        assertTrue(ci.high().isEmpty());
+    }
 }

@@ -26,6 +26,19 @@ class McNemarTest {
     }
 
     @Test
+    void sevenAgainstOneGivesTheTailOfBinomialEight() {
+        // P(X <= 1) for Bin(8, 1/2) = (1 + 8) / 256; two-sided 18 / 256 = 0.0703
+        assertEquals(0.0703125, McNemar.exactP(7, 1), 1e-12);
+    }
+
+    @Test
+    void fewerThanSixDiscordantPairsCannotReachFivePercent() {
+        assertEquals(0.0625, McNemar.smallestP(5), 1e-12);
+        assertEquals(0.03125, McNemar.smallestP(6), 1e-12);
+        assertEquals(1.0, McNemar.smallestP(0), 1e-12);
+    }
+
+    @Test
     void negativeCountsAreRefused() {
         assertThrows(IllegalArgumentException.class, () -> McNemar.exactP(-1, 3));
     }

@@ -12,6 +12,7 @@ import sitcov.analysis.CampaignAnalysis;
 import sitcov.analysis.CampaignTrial;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.CampaignTarget;
 import sitcov.experiment.MapId;
 import sitcov.experiment.MapRun;
 import sitcov.experiment.StopReason;
@@ -25,21 +26,22 @@ import sitcov.oracle.Outcome;
 
 class CampaignVerdictTest {
     private static final sitcov.judge.Variant F = new sitcov.judge.Variant.Seeded(Fault.ofId(2));
+    private static final CampaignTarget TARGET = new CampaignTarget.OfVariant(F);
 
     private static CampaignTrial trial(String driver, int t, long ticks) {
         if (ticks < 0) {
-            return new CampaignTrial(F, driver, t, 7, "replication-" + t, false, 100, 100, 3, StopReason.TICKS,
+            return new CampaignTrial(TARGET, driver, t, 7, "replication-" + t, false, 100, 100, 3, StopReason.TICKS,
                     Optional.empty(), Optional.empty());
         }
         RunSummary run = new RunSummary(Outcome.STOPPED_AT_VERDICT, ticks, Collections.nCopies(AccidentType.values().length, 0L));
         MapRun map = new MapRun(t, driver, 0, 0, new MapId.Seeded(t), t, t, t, List.of(), run, List.of(new FaultOutcome(F, run,
                 true, true, 1, Detection.FOUND, Optional.of(sitcov.oracle.Failure.TIMEOUT), true)));
-        return new CampaignTrial(F, driver, t, 7, "replication-" + t, true, ticks, ticks, 1, StopReason.FALSIFIED,
+        return new CampaignTrial(TARGET, driver, t, 7, "replication-" + t, true, ticks, ticks, 1, StopReason.FALSIFIED,
                 Optional.of(map), Optional.of(sitcov.oracle.Failure.TIMEOUT));
     }
 
     private static List<String> verdict(List<CampaignTrial> trials, int n) {
-        CampaignConfig config = new CampaignConfig("c", 1, List.of(F), List.of("a", "b"), n, 100, 10, GridDefinition.paper(),
+        CampaignConfig config = new CampaignConfig("c", 1, List.of(TARGET), List.of("a", "b"), n, 100, 10, GridDefinition.paper(),
                 FaultyRuns.UNTIL_VERDICT, "builtin");
         return CampaignVerdict.lines(CampaignAnalysis.of(config, trials));
     }

@@ -122,6 +122,16 @@ class RecordedRunsOfAControllerProgramTest {
         CliRunner export = CliRunner.run("export", whole.toString(), "--found", "--out", dir.resolve("export").toString());
         assertEquals(ExitCode.OK, export.exitCode(), export.err());
         assertEquals(1 + found, Files.readAllLines(dir.resolve("export").resolve("index.csv")).size());
+        // and what it wrote is as valid as a builtin folder's export
+        try (Stream<Path> files = Files.list(dir.resolve("export"))) {
+            List<Path> written = files.filter(f -> f.toString().endsWith(".xodr") || f.toString().endsWith(".xosc")).toList();
+            assertTrue(written.stream().anyMatch(f -> f.toString().endsWith("-run.xosc")), "a recorded run among " + written);
+            for (Path f : written) {
+                sitcov.export.AsamSchemas.assertValid(f.toString().endsWith(".xodr") ? sitcov.export.AsamSchemas.openDrive()
+                        : sitcov.export.AsamSchemas.openScenario(sitcov.export.ScenarioVersion.V1_0), Files.readString(f),
+                        f.getFileName().toString());
+            }
+        }
     }
 
     @Test

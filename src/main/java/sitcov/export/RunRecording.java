@@ -35,7 +35,9 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
      * long after its failure (a car that crashed early may stand for thousands of ticks).
      */
     public RunRecording until(long lastTick) {
-        int samples = (int) Math.min(tracks.get(0).samples().size(), lastTick + 2);
+        int all = tracks.get(0).samples().size();
+        // lastTick may be Long.MAX_VALUE, "to the end": capped before adding, so that it cannot overflow
+        int samples = (int) Math.min(all, Math.min(lastTick, all) + 2);
         List<Track> cut = tracks.stream().map(t -> new Track(t.entity(), t.sitcovId(),
                 t.samples().subList(0, samples))).toList();
         return new RunRecording(map, internalSeed, faults, result, cut);

@@ -147,6 +147,9 @@ class ExportCommandTest {
             assertEquals(column(finding(), row, "external_seed"), parameter(doc, "sitcovExternalSeed"), run);
             assertEquals(column(finding(), row, "internal_seed"), parameter(doc, "sitcovInternalSeed"), run);
             assertEquals("row-" + n + ".xodr", text(doc, "/OpenSCENARIO/RoadNetwork/LogicFile/@filepath"), run);
+            // a row's runs are recorded to their ends
+            assertEquals(Long.parseLong(parameter(doc, "sitcovTicks")) - 1,
+                    Long.parseLong(parameter(doc, "sitcovLastTickRecorded")), run);
         }
         assertTrue(parameter(parse(dir.resolve("row-" + n + "-run.xosc")), "sitcovFaults").matches(".*\\b4\\b.*"));
         assertFalse(parameter(parse(dir.resolve("row-" + n + "-run-fault-free.xosc")), "sitcovFaults").matches(".*\\b4\\b.*"));

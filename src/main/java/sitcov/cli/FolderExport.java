@@ -68,11 +68,12 @@ final class FolderExport {
         String base = "row-" + number;
         List<ExportCommand.Planned> files = new ArrayList<>(ExportCommand.mapFiles(base, map, version));
         if (FolderRecordings.has(folder, row)) {
-            replayed(folder, row, map);
-            files.add(fromRecording(base + "-run.xosc", base + ".xodr", folder, row, map, false, Long.MAX_VALUE, version));
+            Optional<Accident> found = replayed(folder, row, map).verdict().flatMap(FaultVerdict::newAccident);
+            files.add(fromRecording(base + "-run.xosc", base + ".xodr", folder, row, map, false, Long.MAX_VALUE, found,
+                    version));
             if (row.variant().isPresent()) {
                 files.add(fromRecording(base + "-run-fault-free.xosc", base + ".xodr", folder, row, map, true,
-                        Long.MAX_VALUE, version));
+                        Long.MAX_VALUE, Optional.empty(), version));
             }
             return new ExportCommand.Plan(files, to -> "Exported row " + number + " of " + folder + ", replayed from its"
                     + " recordings, to " + to + ": " + String.join(", ", files.stream().map(ExportCommand.Planned::name)
@@ -80,12 +81,12 @@ final class FolderExport {
         }
         RecordedRows.refuseOtherController("export", folder, row);
         Set<Fault> faults = row.fault().map(Set::of).orElse(Set.of());
-        checked(row, map);
+        Optional<Accident> found = checked(row, map).verdicts().stream().findFirst().flatMap(FaultVerdict::newAccident);
         files.add(ExportCommand.recording(base + "-run.xosc", base + ".xodr", map, row.map().internalSeed(), faults,
-                version));
+                found, version));
         if (row.fault().isPresent()) {
             files.add(ExportCommand.recording(base + "-run-fault-free.xosc", base + ".xodr", map,
-                    row.map().internalSeed(), Set.of(), version));
+                    row.map().internalSeed(), Set.of(), Optional.empty(), version));
         }
         return new ExportCommand.Plan(files, to -> "Exported row " + number + " of " + folder + " to " + to + ": "
                 + String.join(", ", files.stream().map(ExportCommand.Planned::name).toList()) + ".");
@@ -126,17 +127,18 @@ final class FolderExport {
                 progress.done(index.size() - 1);
                 Optional<Accident> failure = verdict.newAccident();
                 long until = failure.map(a -> a.tick() + AFTER_FAILURE_TICKS).orElse(Long.MAX_VALUE);
-                files.add(fromRecording(base + "-run.xosc", base + ".xodr", folder, row, map, false, until, version));
+                files.add(fromRecording(base + "-run.xosc", base + ".xodr", folder, row, map, false, until, failure,
+                        version));
                 continue;
             }
             RecordedRows.refuseOtherController("export", folder, row);
             JudgedMap judged = checked(row, map);
             index.add(indexLine(row, judged.verdicts().get(0), base));
             progress.done(index.size() - 1);
-            long failure = judged.verdicts().get(0).newAccident().orElseThrow().tick();
+            Accident failure = judged.verdicts().get(0).newAccident().orElseThrow();
             files.add(new ExportCommand.Planned(base + "-run.xosc", () -> OpenScenario.recording(
                     RunRecording.of(map, row.map().internalSeed(), Set.of(row.fault().orElseThrow()), BuiltinCar.FACTORY)
-                            .until(failure + AFTER_FAILURE_TICKS), base + ".xodr", version)));
+                            .until(failure.tick() + AFTER_FAILURE_TICKS), Optional.of(failure), base + ".xodr", version)));
         }
         files.add(new ExportCommand.Planned(ExportCommand.INDEX, () -> String.join("\n", index) + "\n"));
         return new ExportCommand.Plan(files, to -> "Exported the " + found.size() + " runs of " + folder
@@ -156,15 +158,16 @@ final class FolderExport {
     /**
      * The row's own run ({@code reference}: its reference's), replayed from its recording to the end of tick
      * {@code until} at most (a controller failure ends it where it failed; a run the experiment stopped at its
-     * verdict, there), as an OpenSCENARIO recording.
+     * verdict, there), as an OpenSCENARIO recording; {@code found} is the accident that found its fault.
      */
     private static ExportCommand.Planned fromRecording(String name, String roadFile, Path folder, ResultsRows.Row row,
                                                        WorldMap map, boolean reference, long until,
-                                                       ScenarioVersion version) throws IOException {
+                                                       Optional<Accident> found, ScenarioVersion version)
+            throws IOException {
         Recording r = RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, reference)));
         Set<Fault> faults = reference ? Set.of() : row.fault().map(Set::of).orElse(Set.of());
         return new ExportCommand.Planned(name, () -> OpenScenario.recording(RunRecording.replayed(map, r.internalSeed(),
-                r.commands(), r.stopAfter(), faults).until(until), roadFile, version));
+                r.commands(), r.stopAfter(), faults).until(until), found, roadFile, version));
     }
 
     /** The row judged again; it must give what runs.csv recorded, or the export stops. */

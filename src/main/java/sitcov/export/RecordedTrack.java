@@ -7,7 +7,10 @@ import sitcov.world.Dimensions;
 /**
  * One vehicle of a recorded run as a maneuver group. Each stretch the vehicle spends on the map is
  * an event at its first tick with a timed trajectory: a vertex for each tick interpolation between
- * vertices cannot give back ({@link KeptVertices}), positions followed exactly. A moving car that
+ * vertices cannot give back ({@link KeptVertices}), positions followed exactly. A player moves a vehicle along a
+ * trajectory by the distance covered and turns it by the headings of the vertices it passes, so between two
+ * vertices at one place it cannot turn: where a vehicle turned on the spot, the vertex after the turn is written
+ * a tenth of a millimetre (the last digit written) east of the place, and a player turns it there. A moving car that
  * leaves the map (to be replaced at a dead end later) is teleported, standing, to a parking place
  * of its own outside the world, and teleported back where it re-enters: players such as CARLA's
  * ScenarioRunner know no way to hide a vehicle.
@@ -64,7 +67,7 @@ final class RecordedTrack {
      * When an event for sample {@code i} starts: half a tick early, since a player fires a time
      * condition only once time has passed it, which would miss the sample itself.
      */
-    private static double triggerTime(int sample) {
+    static double triggerTime(int sample) {
         return Math.max(0, sample * Dimensions.TICK_SECONDS - Dimensions.TICK_SECONDS / 2);
     }
 
@@ -114,11 +117,16 @@ final class RecordedTrack {
         xml.open("Trajectory", "name", track.entity() + " from sample " + stretch.first(), "closed", "false");
         xml.open("Shape").open("Polyline");
         List<RunRecording.Sample> samples = track.samples().subList(stretch.first(), stretch.last() + 1);
+        ScenarioParts.Written previous = null;
         for (int i : KeptVertices.of(samples)) {
-            RunRecording.Sample s = samples.get(i);
+            ScenarioParts.Written pose = ScenarioParts.writtenPose(samples.get(i), kind);
+            if (previous != null && pose.samePlace(previous) && !pose.h().equals(previous.h())) {
+                pose = pose.eastByOneDigit();
+            }
             xml.startLine().open("Vertex", "time", Xml.seconds((stretch.first() + i) * Dimensions.TICK_SECONDS));
-            ScenarioParts.vehiclePose(xml, s.x(), s.y(), s.bearing(), kind);
+            pose.write(xml);
             xml.close().endLine();
+            previous = pose;
         }
         xml.close().close().close();
         if (wraps) {

@@ -24,9 +24,10 @@ import sitcov.results.ResultsRows;
 import sitcov.world.WorldMap;
 
 /**
- * {@code export RESULTS --row N} and {@code export RESULTS --found}: runs a results folder recorded,
- * run again with the builtin car (and checked against {@code runs.csv}, as replays are) and written
- * as recordings beside their map.
+ * {@code export RESULTS --row N} and {@code export RESULTS --found}: runs of a results folder, driven
+ * from the commands it kept (or, where it kept none, run again with the builtin car), checked against
+ * {@code runs.csv} as replays are, and written as recordings beside their map, the accident that found
+ * a fault marked.
  */
 final class FolderExport {
     private static final String INDEX_HEADER = "row,replication,driver,map_index,external_seed,internal_seed,fault,"

@@ -15,6 +15,7 @@ import sitcov.export.OpenScenario;
 import sitcov.export.RunRecording;
 import sitcov.export.ScenarioVersion;
 import sitcov.faults.Fault;
+import sitcov.oracle.Accident;
 import sitcov.results.IoReason;
 import sitcov.results.OutputFile;
 import sitcov.world.MapGenerator;
@@ -142,10 +143,11 @@ final class ExportCommand implements Command {
         return files;
     }
 
+    /** The builtin car's run recorded; {@code found}, the accident that found its fault, is marked in it. */
     static Planned recording(String name, String roadFile, WorldMap map, long internalSeed, Set<Fault> faults,
-                             ScenarioVersion version) {
-        return new Planned(name, () -> OpenScenario.recording(RunRecording.of(map, internalSeed, faults, BuiltinCar.FACTORY), roadFile,
-                version));
+                             Optional<Accident> found, ScenarioVersion version) {
+        return new Planned(name, () -> OpenScenario.recording(RunRecording.of(map, internalSeed, faults, BuiltinCar.FACTORY),
+                found, roadFile, version));
     }
 
     /** {@code --seed S} or {@code --load FILE}: the map, its situation, and with {@code --record} a run of it. */
@@ -173,7 +175,7 @@ final class ExportCommand implements Command {
                 Set<Fault> faults = options.faults("--fault").orElse(Set.of());
                 String name = base + "-run-" + internal + (faults.isEmpty() ? "" : "-fault-" + String.join("-",
                         faults.stream().map(f -> Integer.toString(f.id())).sorted().toList())) + ".xosc";
-                files.add(recording(name, base + ".xodr", map, internal, faults, version));
+                files.add(recording(name, base + ".xodr", map, internal, faults, Optional.empty(), version));
             }
             String note = map.layout().isRunnable() ? "" : " (no situation: the map has no Target or no car start)";
             return new Plan(files, to -> "Exported " + String.join(", ", files.stream().map(Planned::name).toList())

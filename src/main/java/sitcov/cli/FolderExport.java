@@ -29,9 +29,10 @@ import sitcov.vehicles.CommandLog;
 import sitcov.world.WorldMap;
 
 /**
- * {@code export RESULTS --row N} and {@code export RESULTS --found}: runs a results folder recorded,
- * run again with the builtin car (and checked against {@code runs.csv}, as replays are) and written
- * as recordings beside their map.
+ * {@code export RESULTS --row N} and {@code export RESULTS --found}: runs of a results folder, driven
+ * from the commands it kept (or, where it kept none, run again with the builtin car), checked against
+ * {@code runs.csv} as replays are, and written as recordings beside their map, the accident that found
+ * a fault marked.
  */
 final class FolderExport {
     private static final String INDEX_HEADER = "row,replication,driver,map_index,external_seed,internal_seed,fault,"
@@ -73,11 +74,12 @@ final class FolderExport {
         String base = "row-" + number;
         List<ExportCommand.Planned> files = new ArrayList<>(ExportCommand.mapFiles(base, map, version));
         if (FolderRecordings.has(folder, row)) {
-            replayed(folder, row, map);
-            files.add(fromRecording(base + "-run.xosc", base + ".xodr", folder, row, map, false, Long.MAX_VALUE, version));
+            Optional<Accident> found = replayed(folder, row, map).verdict().flatMap(FaultVerdict::newAccident);
+            files.add(fromRecording(base + "-run.xosc", base + ".xodr", folder, row, map, false, Long.MAX_VALUE, found,
+                    version));
             if (row.variant().isPresent()) {
                 files.add(fromRecording(base + "-run-fault-free.xosc", base + ".xodr", folder, row, map, true,
-                        Long.MAX_VALUE, version));
+                        Long.MAX_VALUE, Optional.empty(), version));
             }
             return new ExportCommand.Plan(files, to -> "Exported row " + number + " of " + folder + ", replayed from its"
                     + " recordings, to " + to + ": " + String.join(", ", files.stream().map(ExportCommand.Planned::name)
@@ -85,12 +87,12 @@ final class FolderExport {
         }
         RecordedRows.refuseOtherController("export", folder, row);
         Set<Fault> faults = row.fault().map(Set::of).orElse(Set.of());
-        checked(row, map);
+        Optional<Accident> found = checked(row, map).verdicts().stream().findFirst().flatMap(FaultVerdict::newAccident);
         files.add(ExportCommand.recording(base + "-run.xosc", base + ".xodr", map, row.map().internalSeed(), faults,
-                version));
+                found, version));
         if (row.fault().isPresent()) {
             files.add(ExportCommand.recording(base + "-run-fault-free.xosc", base + ".xodr", map,
-                    row.map().internalSeed(), Set.of(), version));
+                    row.map().internalSeed(), Set.of(), Optional.empty(), version));
         }
         return new ExportCommand.Plan(files, to -> "Exported row " + number + " of " + folder + " to " + to + ": "
                 + String.join(", ", files.stream().map(ExportCommand.Planned::name).toList()) + ".");
@@ -115,15 +117,17 @@ final class FolderExport {
                 long until = verdict.newAccident().map(a -> a.tick() + AFTER_FAILURE_TICKS).orElse(Long.MAX_VALUE);
                 Recording r = RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, false)));
                 runFile = shared.run(new SameRun(row.map().map(), r.internalSeed(), variant, Math.min(until, r.stopAfter()),
-                        Optional.of(r.commands())), row, name -> fromRecording(name, road, r, row, map, false, until, version));
+                        Optional.of(r.commands())), row, name -> fromRecording(name, road, r, row, map, false, until,
+                        verdict.newAccident(), version));
             } else {
                 RecordedRows.refuseOtherController("export", folder, row);
                 verdict = checked(row, map).verdicts().get(0);
-                long until = verdict.newAccident().orElseThrow().tick() + AFTER_FAILURE_TICKS;
+                Accident failure = verdict.newAccident().orElseThrow();
+                long until = failure.tick() + AFTER_FAILURE_TICKS;
                 runFile = shared.run(new SameRun(row.map().map(), row.map().internalSeed(), variant, until, Optional.empty()),
                         row, name -> new ExportCommand.Planned(name, () -> OpenScenario.recording(RunRecording.of(map,
                                 row.map().internalSeed(), Set.of(row.fault().orElseThrow()), BuiltinCar.FACTORY)
-                                .until(until), road, version)));
+                                .until(until), Optional.of(failure), road, version)));
             }
             index.add(indexLine(row, verdict, mapName(row.map().map()), runFile));
             progress.done(index.size() - 1);
@@ -213,21 +217,22 @@ final class FolderExport {
     /**
      * The row's own run ({@code reference}: its reference's), replayed from its recording to the end of tick
      * {@code until} at most (a controller failure ends it where it failed; a run the experiment stopped at its
-     * verdict, there), as an OpenSCENARIO recording.
+     * verdict, there), as an OpenSCENARIO recording; {@code found} is the accident that found its fault.
      */
     private static ExportCommand.Planned fromRecording(String name, String roadFile, Path folder, ResultsRows.Row row,
                                                        WorldMap map, boolean reference, long until,
-                                                       ScenarioVersion version) throws IOException {
+                                                       Optional<Accident> found, ScenarioVersion version)
+            throws IOException {
         Recording r = RecordingFile.read(FolderRecordings.file(folder, FolderRecordings.key(row, reference)));
-        return fromRecording(name, roadFile, r, row, map, reference, until, version);
+        return fromRecording(name, roadFile, r, row, map, reference, until, found, version);
     }
 
     private static ExportCommand.Planned fromRecording(String name, String roadFile, Recording r, ResultsRows.Row row,
                                                        WorldMap map, boolean reference, long until,
-                                                       ScenarioVersion version) {
+                                                       Optional<Accident> found, ScenarioVersion version) {
         Set<Fault> faults = reference ? Set.of() : row.fault().map(Set::of).orElse(Set.of());
         return new ExportCommand.Planned(name, () -> OpenScenario.recording(RunRecording.replayed(map, r.internalSeed(),
-                r.commands(), r.stopAfter(), faults).until(until), roadFile, version));
+                r.commands(), r.stopAfter(), faults).until(until), found, roadFile, version));
     }
 
     /** The row judged again; it must give what runs.csv recorded, or the export stops. */

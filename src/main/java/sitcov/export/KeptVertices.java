@@ -33,14 +33,20 @@ final class KeptVertices {
      * millimetres and its heading as whole ten-thousandths of a radian, in (−π, π].
      */
     record Vertex(int sample, long x, long y, long h) {
-        /** Its WorldPosition, written with exactly the numbers the thinning tested. */
-        void position(Xml xml) {
+        /**
+         * Its WorldPosition, written with the numbers the thinning tested, but for x given in tenths of a
+         * millimetre ({@link #NUDGES_A_UNIT} to the unit): where the track nudges a vertex a tenth east.
+         */
+        void position(Xml xml, long xTenths) {
             xml.open("Position");
-            xml.empty("WorldPosition", "x", Xml.decimal(x, POSITION_DECIMALS), "y", Xml.decimal(y, POSITION_DECIMALS),
-                    "h", Xml.decimal(h, HEADING_DECIMALS));
+            xml.empty("WorldPosition", "x", Xml.decimal(xTenths, POSITION_DECIMALS + 1), "y",
+                    Xml.decimal(y, POSITION_DECIMALS), "h", Xml.decimal(h, HEADING_DECIMALS));
             xml.close();
         }
     }
+
+    /** Tenths of a millimetre in a millimetre: the step of a nudge, within the position's tolerance. */
+    static final long NUDGES_A_UNIT = 10;
 
     /** The vertices of {@code kind}'s track, in order; its first and last sample always. */
     static List<Vertex> of(List<RunRecording.Sample> samples, ScenarioParts.Kind kind) {

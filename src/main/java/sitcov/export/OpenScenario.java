@@ -2,12 +2,14 @@ package sitcov.export;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
 import sitcov.vehicles.Dynamics;
 import sitcov.world.Dimensions;
 import sitcov.world.Layout;
 import sitcov.world.ParkedCar;
+import sitcov.world.RoadNetwork;
 import sitcov.world.StartPose;
 import sitcov.world.Target;
 import sitcov.world.WorldMap;
@@ -16,13 +18,20 @@ import sitcov.world.WorldMap;
  * What stands and moves on an exported map, as an ASAM OpenSCENARIO XML document
  * (src/main/java/sitcov/export/README.md, "Export to OpenDRIVE and OpenSCENARIO"). A situation puts the car under
  * test at its start with
- * the Target as its goal (the scenario stops when it is reached), the parked cars where they stand
+ * the route to the Target as its goal (the scenario stops when it is reached), the parked cars where they stand
  * and the moving cars at their starts, driving off at sitcov's speed. A recording replays a run:
- * every vehicle follows its timed trajectory, and the run's accidents are declared as parameters
- * (and summed up in the header's description).
+ * every vehicle follows its timed trajectory, the run itself is told by the ego's properties, and its accidents
+ * and contacts are declared as events a player reports when it sees them ({@link Declared}).
  */
 public final class OpenScenario {
     private static final double TICK = Dimensions.TICK_SECONDS;
+    /** How ScenarioRunner tells the ego vehicle, the one a user's agent drives. */
+    private static final ScenarioParts.Declaration EGO_TYPE = property("type", "ego_vehicle");
+    /**
+     * Asks esmini to turn a vehicle on a trajectory to each vertex's own heading as it passes it, as the vehicle
+     * was in sitcov; by default it blends the headings either side of a vertex, which lags a turn by half a tick's.
+     */
+    private static final ScenarioParts.Declaration SEGMENT_HEADINGS = property("plineInterpolation", "segment");
 
     private OpenScenario() {
     }
@@ -36,8 +45,8 @@ public final class OpenScenario {
         ScenarioParts.header(xml, version, "sitcov situation " + map.seed() + ": the car under test drives from its start"
                 + " to the Target among " + layout.parkedCars().size() + " parked and " + map.movingCars().size()
                 + " moving cars");
-        ScenarioParts.context(xml, List.of(), roadFile);
-        entities(xml, map);
+        ScenarioParts.context(xml, version, List.of(), roadFile);
+        entities(xml, map, List.of(EGO_TYPE), List.of());
         xml.open("Storyboard");
         xml.open("Init").open("Actions");
         place(xml, RunRecording.EGO, car, ScenarioParts.Kind.CAR_UNDER_TEST);
@@ -57,32 +66,36 @@ public final class OpenScenario {
         actors(xml, RunRecording.EGO);
         xml.open("Maneuver", "name", "reach the Target");
         xml.open("Event", "name", "head for the Target", "priority", "parallel");
-        xml.open("Action", "name", "acquire the Target");
-        xml.open("PrivateAction").open("RoutingAction").open("AcquirePositionAction");
-        ScenarioParts.targetPosition(xml, target);
-        xml.close().close().close();
-        xml.close();
+        route(xml, map, car, target);
         ScenarioParts.timeTrigger(xml, "StartTrigger", "at the start", 0);
         xml.close().close().close();
         ScenarioParts.timeTrigger(xml, "StartTrigger", "at the start", 0);
         xml.close().close();
-        ScenarioParts.stopAtTargetOrTimeout(xml, target, Dynamics.TIMEOUT_TICKS * TICK);
+        ScenarioParts.stopAtTargetOrTimeout(xml, target, Dynamics.TIMEOUT_TICKS * TICK, version);
         xml.close();
         xml.close();
         return xml.document();
     }
 
     public static String recording(RunRecording run, String roadFile, ScenarioVersion version) {
+        return recording(run, Optional.empty(), roadFile, version);
+    }
+
+    /** A recording whose accident {@code found} found the run's fault: its event and the ego say so. */
+    public static String recording(RunRecording run, Optional<Accident> found, String roadFile, ScenarioVersion version) {
         WorldMap map = run.map();
         List<Accident> accidents = run.accidents();
+        List<Declared> declared = Declared.of(run, found);
+        Optional<Declared> finding = declared.stream().filter(Declared::found).findFirst();
         Xml xml = new Xml();
         xml.open("OpenSCENARIO");
         ScenarioParts.header(xml, version, "sitcov recorded run: " + runName(run) + "; " + run.result().outcome()
                 + " after " + run.result().ticks() + " ticks" + (run.isCut() ? ", recorded to tick " + run.lastTick() : "")
                 + "; " + (accidents.isEmpty() ? "no accident" : accidents.size() + (accidents.size() == 1
-                ? " accident: " : " accidents, the first ") + describe(run, accidents.get(0))));
-        ScenarioParts.context(xml, parameters(run), roadFile);
-        entities(xml, map);
+                ? " accident: " : " accidents, the first ") + describe(run, accidents.get(0)))
+                + finding.map(d -> "; the accident that found the fault: " + d.describe()).orElse(""));
+        ScenarioParts.context(xml, version, DeclaredEvents.variables(declared), roadFile);
+        entities(xml, map, egoProperties(run, finding), List.of(SEGMENT_HEADINGS));
         xml.open("Storyboard");
         xml.open("Init").open("Actions");
         for (RunRecording.Track track : run.tracks()) {
@@ -98,6 +111,7 @@ public final class OpenScenario {
         for (int i = 0; i < run.tracks().size(); i++) {
             RecordedTrack.maneuverGroup(xml, run.tracks().get(i), version, i);
         }
+        DeclaredEvents.maneuverGroup(xml, declared, version);
         ScenarioParts.timeTrigger(xml, "StartTrigger", "at the start", 0);
         xml.close().close();
         xml.open("StopTrigger");
@@ -110,27 +124,22 @@ public final class OpenScenario {
         return xml.document();
     }
 
-    /** The accidents as scenario parameters: a player or a script can read them without parsing comments. */
-    private static List<String[]> parameters(RunRecording run) {
-        List<String[]> out = new ArrayList<>();
-        out.add(new String[] {"sitcovExternalSeed", "string", Long.toString(run.map().seed())});
-        out.add(new String[] {"sitcovInternalSeed", "string", Long.toString(run.internalSeed())});
-        out.add(new String[] {"sitcovFaults", "string", faults(run)});
-        out.add(new String[] {"sitcovOutcome", "string", run.result().outcome().name()});
-        out.add(new String[] {"sitcovTicks", "integer", Long.toString(run.result().ticks())});
-        out.add(new String[] {"sitcovLastTickRecorded", "integer", Long.toString(run.lastTick())});
-        out.add(new String[] {"accidentCount", "integer", Integer.toString(run.accidents().size())});
-        int n = 1;
-        for (Accident a : run.accidents()) {
-            String p = "accident" + n++;
-            out.add(new String[] {p + "Type", "string", a.type().name()});
-            out.add(new String[] {p + "Tick", "integer", Long.toString(a.tick())});
-            out.add(new String[] {p + "Time", "double", Xml.seconds(AsamFrame.seconds(a.tick()))});
-            out.add(new String[] {p + "X", "double", Xml.metres(AsamFrame.x(a.x()))});
-            out.add(new String[] {p + "Y", "double", Xml.metres(AsamFrame.y(a.y()))});
-            out.add(new String[] {p + "Other", "string", otherParty(run, a)});
-        }
+    /** The ego's properties in a recording: the run, so that a player or a script reads it from the car it drove. */
+    private static List<ScenarioParts.Declaration> egoProperties(RunRecording run, Optional<Declared> finding) {
+        List<ScenarioParts.Declaration> out = new ArrayList<>(List.of(EGO_TYPE, SEGMENT_HEADINGS));
+        out.add(property("sitcovExternalSeed", Long.toString(run.map().seed())));
+        out.add(property("sitcovInternalSeed", Long.toString(run.internalSeed())));
+        out.add(property("sitcovFaults", faults(run)));
+        out.add(property("sitcovOutcome", run.result().outcome().name()));
+        out.add(property("sitcovTicks", Long.toString(run.result().ticks())));
+        out.add(property("sitcovLastTickRecorded", Long.toString(run.lastTick())));
+        out.add(property("sitcovAccidents", Integer.toString(run.accidents().size())));
+        finding.ifPresent(d -> out.add(property("sitcovFoundBy", d.id())));
         return out;
+    }
+
+    private static ScenarioParts.Declaration property(String name, String value) {
+        return new ScenarioParts.Declaration(name, "string", value);
     }
 
     /** The entity the accident involved besides the car under test, or "none". */
@@ -141,8 +150,13 @@ public final class OpenScenario {
         if (a.type() == AccidentType.CLASHWITHOBSTACLE) {
             return RunRecording.parkedName(a.otherParty());
         }
-        return run.tracks().stream().filter(t -> t.sitcovId() == a.otherParty() && !t.entity().equals(RunRecording.EGO))
-                .map(RunRecording.Track::entity).findFirst().orElse("vehicle " + a.otherParty());
+        return vehicleNamed(run, a.otherParty());
+    }
+
+    /** The entity of the moving car with sitcov id {@code id}. */
+    static String vehicleNamed(RunRecording run, int id) {
+        return run.tracks().stream().filter(t -> t.sitcovId() == id && !t.entity().equals(RunRecording.EGO))
+                .map(RunRecording.Track::entity).findFirst().orElse("vehicle " + id);
     }
 
     static String describe(RunRecording run, Accident a) {
@@ -161,15 +175,42 @@ public final class OpenScenario {
                 .map(f -> Integer.toString(f.id())).sorted().toList());
     }
 
-    private static void entities(Xml xml, WorldMap map) {
+    private static void entities(Xml xml, WorldMap map, List<ScenarioParts.Declaration> ego,
+                                 List<ScenarioParts.Declaration> moving) {
         xml.open("Entities");
-        ScenarioParts.vehicle(xml, RunRecording.EGO, ScenarioParts.Kind.CAR_UNDER_TEST);
+        ScenarioParts.vehicle(xml, RunRecording.EGO, ScenarioParts.Kind.CAR_UNDER_TEST, ego);
         for (ParkedCar p : map.layout().parkedCars()) {
-            ScenarioParts.vehicle(xml, RunRecording.parkedName(p.id()), ScenarioParts.Kind.PARKED);
+            ScenarioParts.vehicle(xml, RunRecording.parkedName(p.id()), ScenarioParts.Kind.PARKED, List.of());
         }
         for (int i = 0; i < map.movingCars().size(); i++) {
-            ScenarioParts.vehicle(xml, RunRecording.movingName(i), ScenarioParts.Kind.MOVING);
+            ScenarioParts.vehicle(xml, RunRecording.movingName(i), ScenarioParts.Kind.MOVING, moving);
         }
+        xml.close();
+    }
+
+    /**
+     * The ego's way to the Target: its route's waypoints, or, where no route along the lanes reaches the Target,
+     * the Target alone, for the player to find a way.
+     */
+    private static void route(Xml xml, WorldMap map, StartPose car, Target target) {
+        Optional<EgoRoute> route = EgoRoute.plan(RoadNetwork.of(map.layout()), car, target);
+        xml.open("Action", "name", route.isPresent() ? "follow the route to the Target" : "acquire the Target");
+        xml.open("PrivateAction").open("RoutingAction");
+        if (route.isPresent()) {
+            xml.open("AssignRouteAction").open("Route", "name", "to the Target", "closed", "false");
+            for (EgoRoute.Waypoint w : route.get().waypoints()) {
+                xml.open("Waypoint", "routeStrategy", "shortest");
+                ScenarioParts.worldPose(xml, w.point().x(), w.point().y(), w.heading().bearing());
+                xml.close();
+            }
+            xml.close().close();
+        } else {
+            xml.comment("no route along the lanes reaches the Target from the car's start");
+            xml.open("AcquirePositionAction");
+            ScenarioParts.targetPosition(xml, target);
+            xml.close();
+        }
+        xml.close().close();
         xml.close();
     }
 

@@ -7,7 +7,10 @@ import sitcov.world.Dimensions;
 /**
  * One vehicle of a recorded run as a maneuver group. Each stretch the vehicle spends on the map is
  * an event at its first tick with a timed trajectory: a vertex for each tick interpolation between
- * vertices cannot give back ({@link KeptVertices}), positions followed exactly. A moving car that
+ * vertices cannot give back ({@link KeptVertices}), positions followed exactly. A player moves a vehicle along a
+ * trajectory by the distance covered and turns it by the headings of the vertices it passes, so between two
+ * vertices at one place it cannot turn: where a vehicle turned on the spot, the vertex after the turn is written
+ * a tenth of a millimetre (the last digit written) east of the place, and a player turns it there. A moving car that
  * leaves the map (to be replaced at a dead end later) is teleported, standing, to a parking place
  * of its own outside the world, and teleported back where it re-enters: players such as CARLA's
  * ScenarioRunner know no way to hide a vehicle.
@@ -64,7 +67,7 @@ final class RecordedTrack {
      * When an event for sample {@code i} starts: half a tick early, since a player fires a time
      * condition only once time has passed it, which would miss the sample itself.
      */
-    private static double triggerTime(int sample) {
+    static double triggerTime(int sample) {
         return Math.max(0, sample * Dimensions.TICK_SECONDS - Dimensions.TICK_SECONDS / 2);
     }
 
@@ -114,11 +117,23 @@ final class RecordedTrack {
         xml.open("Trajectory", "name", track.entity() + " from sample " + stretch.first(), "closed", "false");
         xml.open("Shape").open("Polyline");
         List<RunRecording.Sample> samples = track.samples().subList(stretch.first(), stretch.last() + 1);
+        long previousX = Long.MIN_VALUE;
+        long previousY = Long.MIN_VALUE;
+        long previousH = Long.MIN_VALUE;
         for (KeptVertices.Vertex v : KeptVertices.of(samples, kind)) {
             long tenths = Math.round((stretch.first() + v.sample()) * Dimensions.TICK_SECONDS * 10);
             xml.startLine().open("Vertex", "time", Xml.decimal(tenths, 1));
-            v.position(xml);
+            // a player takes a car's heading from its path, so a car turning on the spot needs a step to turn
+            // over: the smallest the digits can show, a tenth of a millimetre east
+            long x = v.x() * KeptVertices.NUDGES_A_UNIT;
+            if (x == previousX && v.y() == previousY && v.h() != previousH) {
+                x++;
+            }
+            v.position(xml, x);
             xml.close().endLine();
+            previousX = x;
+            previousY = v.y();
+            previousH = v.h();
         }
         xml.close().close().close();
         if (wraps) {

@@ -9,6 +9,7 @@ import sitcov.faults.Fault;
 import sitcov.judge.RunObserver;
 import sitcov.judge.Simulator;
 import sitcov.oracle.AccidentDetector;
+import sitcov.oracle.ExcusedContact;
 import sitcov.oracle.RunResult;
 import sitcov.vehicles.CommandLog;
 import sitcov.vehicles.Telemetry;
@@ -21,13 +22,19 @@ import sitcov.world.WorldMap;
  * exactly what happened. A track's sample 0 is the start (time 0 s); sample {@code t + 1} is the
  * state after tick {@code t}. Parked cars never move, so the map holds them.
  *
- * @param result the whole run's result, even where the recording stops before its end
- * @param tracks the car under test first, then every moving car in the order of the map's moving cars
+ * @param result   the whole run's result, even where the recording stops before its end
+ * @param tracks   the car under test first, then every moving car in the order of the map's moving cars
+ * @param excused  the contacts of the car under test the blame rules excused, to the end of the recording
+ * @param traffic  the contacts between two other vehicles, which the oracle does not judge, to the end of the
+ *                 recording
  */
-public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, RunResult result, List<Track> tracks) {
+public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, RunResult result, List<Track> tracks,
+                           List<ExcusedContact> excused, List<Touch> traffic) {
     public RunRecording {
         faults = Set.copyOf(faults);
         tracks = List.copyOf(tracks);
+        excused = List.copyOf(excused);
+        traffic = List.copyOf(traffic);
     }
 
     /**
@@ -35,10 +42,14 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
      * long after its failure (a car that crashed early may stand for thousands of ticks).
      */
     public RunRecording until(long lastTick) {
-        int samples = (int) Math.min(tracks.get(0).samples().size(), lastTick + 2);
+        int all = tracks.get(0).samples().size();
+        // lastTick may be Long.MAX_VALUE, "to the end": capped before adding, so that it cannot overflow
+        int samples = (int) Math.min(all, Math.min(lastTick, all) + 2);
         List<Track> cut = tracks.stream().map(t -> new Track(t.entity(), t.sitcovId(),
                 t.samples().subList(0, samples))).toList();
-        return new RunRecording(map, internalSeed, faults, result, cut);
+        return new RunRecording(map, internalSeed, faults, result, cut,
+                excused.stream().filter(c -> c.tick() <= lastTick).toList(),
+                traffic.stream().filter(c -> c.tick() <= lastTick).toList());
     }
 
     /** The last tick recorded. */
@@ -54,6 +65,10 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
     /** The run's accidents up to the end of the recording. */
     public List<sitcov.oracle.Accident> accidents() {
         return result.accidents().stream().filter(a -> a.tick() <= lastTick()).toList();
+    }
+
+    /** Two vehicles other than the car under test whose footprints came to touch at the end of {@code tick}. */
+    public record Touch(long tick, String entity, String other) {
     }
 
     /** A vehicle's front-centre pose (as sitcov anchors vehicles) and whether it was on the map. */
@@ -98,7 +113,7 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
         for (int i = 0; i < recorder.samples.size(); i++) {
             tracks.add(new Track(i == 0 ? EGO : movingName(i - 1), recorder.ids[i], recorder.samples.get(i)));
         }
-        return new RunRecording(map, internalSeed, faults, result, tracks);
+        return new RunRecording(map, internalSeed, faults, result, tracks, recorder.excused, recorder.traffic);
     }
 
     /** The name of the moving car at {@code index} of the map's moving cars. */
@@ -110,10 +125,13 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
         return "parked" + id;
     }
 
-    /** Collects the samples; the ticks also tell each vehicle's id. */
+    /** Collects the samples, the contacts and, from the ticks, each vehicle's id. */
     private static final class Recorder implements RunObserver {
         private final List<List<Sample>> samples = new ArrayList<>();
         private final int[] ids;
+        private final TrafficContacts contacts;
+        private final List<Touch> traffic = new ArrayList<>();
+        private List<ExcusedContact> excused = List.of();
 
         Recorder(WorldMap map) {
             StartPose car = map.layout().carStart().orElseThrow(() ->
@@ -124,6 +142,7 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
             for (StartPose p : map.movingCars()) {
                 samples.add(new ArrayList<>(List.of(start(p))));
             }
+            contacts = new TrafficContacts(map.movingCars().size(), map.layout().parkedCars().size());
         }
 
         private static Sample start(StartPose p) {
@@ -137,6 +156,8 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
             for (int i = 0; i < moving.size(); i++) {
                 keep(i + 1, moving.get(i));
             }
+            contacts.step(tick, moving, run.parkedBodies(), traffic);
+            excused = detector.excusedContactEvents();
         }
 
         private void keep(int track, Vehicle v) {

@@ -1,6 +1,7 @@
 package sitcov.export;
 
 import java.util.List;
+import java.util.Locale;
 import sitcov.geom.Bearing;
 import sitcov.vehicles.AutonomousCar;
 import sitcov.vehicles.Dynamics;
@@ -28,11 +29,11 @@ final class ScenarioParts {
      * model a player draws. CARLA's ScenarioRunner takes a vehicle's name for the CARLA blueprint
      * to spawn, so the names are blueprints of about the right size; other players ignore them.
      */
-    record Kind(String model, double length, double width, double rearAxleBehindFront, boolean underTest) {
+    record Kind(String model, double length, double width, double rearAxleBehindFront) {
         static final Kind CAR_UNDER_TEST = new Kind("vehicle.micro.microlino", Dimensions.AUTONOMOUS_CAR_LENGTH,
-                Dimensions.AUTONOMOUS_CAR_WIDTH, AutonomousCar.REAR_AXLE, true);
+                Dimensions.AUTONOMOUS_CAR_WIDTH, AutonomousCar.REAR_AXLE);
         static final Kind PARKED = new Kind("vehicle.lincoln.mkz_2020", Dimensions.CAR_LENGTH, Dimensions.CAR_WIDTH,
-                MovingCar.REAR_AXLE, false);
+                MovingCar.REAR_AXLE);
         static final Kind MOVING = PARKED;
 
         /** The kind of a recorded track's vehicle. */
@@ -61,12 +62,21 @@ final class ScenarioParts {
                 "description", description, "author", "sitcov");
     }
 
-    /** Parameters, catalogs and the road network, in the order the schema wants them. */
-    static void context(Xml xml, List<String[]> parameters, String roadFile) {
-        if (!parameters.isEmpty()) {
-            xml.open("ParameterDeclarations");
-            for (String[] p : parameters) {
-                xml.empty("ParameterDeclaration", "name", p[0], "parameterType", p[1], "value", p[2]);
+    /** A parameter or variable: its name, its type (as OpenSCENARIO names types) and its value at the start. */
+    record Declaration(String name, String type, String value) {
+    }
+
+    /**
+     * The variables a scenario changes as it runs (parameters before 1.2), catalogs and the road network, in the
+     * order the schema wants them.
+     */
+    static void context(Xml xml, ScenarioVersion version, List<Declaration> variables, String roadFile) {
+        if (!variables.isEmpty()) {
+            String what = version.hasVariables() ? "Variable" : "Parameter";
+            xml.open(what + "Declarations");
+            for (Declaration d : variables) {
+                xml.empty(what + "Declaration", "name", d.name(), what.toLowerCase(Locale.ROOT) + "Type", d.type(),
+                        "value", d.value());
             }
             xml.close();
         }
@@ -76,7 +86,11 @@ final class ScenarioParts {
         xml.close();
     }
 
-    static void vehicle(Xml xml, String entity, Kind kind) {
+    /**
+     * A vehicle and its properties: ScenarioRunner takes the ego vehicle by its {@code type}, esmini interpolates
+     * a trajectory's headings by its {@code plineInterpolation}, and a recording tells its run on the ego.
+     */
+    static void vehicle(Xml xml, String entity, Kind kind, List<Declaration> properties) {
         xml.open("ScenarioObject", "name", entity);
         xml.open("Vehicle", "name", kind.model(), "vehicleCategory", "car");
         xml.open("BoundingBox");
@@ -93,13 +107,14 @@ final class ScenarioParts {
         axle(xml, "FrontAxle", kind.rearAxleBehindFront() - FRONT_AXLE_BEHIND_FRONT);
         axle(xml, "RearAxle", 0);
         xml.close();
-        if (kind.underTest()) {
-            // how ScenarioRunner tells the ego vehicle, the one a user's agent drives
-            xml.open("Properties");
-            xml.empty("Property", "name", "type", "value", "ego_vehicle");
-            xml.close();
-        } else {
+        if (properties.isEmpty()) {
             xml.empty("Properties");
+        } else {
+            xml.open("Properties");
+            for (Declaration p : properties) {
+                xml.empty("Property", "name", p.name(), "value", p.value());
+            }
+            xml.close();
         }
         xml.close().close();
     }
@@ -165,7 +180,7 @@ final class ScenarioParts {
      * distance; a player measures from its reference point, the rear axle, so the tolerance adds
      * the distance between them), or else the time limit.
      */
-    static void stopAtTargetOrTimeout(Xml xml, Target target, double timeoutSeconds) {
+    static void stopAtTargetOrTimeout(Xml xml, Target target, double timeoutSeconds, ScenarioVersion version) {
         xml.open("StopTrigger");
         xml.open("ConditionGroup");
         xml.open("Condition", "name", "the car under test reaches the Target", "delay", "0", "conditionEdge", "rising");
@@ -174,8 +189,13 @@ final class ScenarioParts {
         xml.empty("EntityRef", "entityRef", RunRecording.EGO);
         xml.close();
         xml.open("EntityCondition");
-        xml.open("ReachPositionCondition", "tolerance",
-                Xml.metres(TargetArrival.CAPTURE_DISTANCE + Kind.CAR_UNDER_TEST.rearAxleBehindFront()));
+        String tolerance = Xml.metres(TargetArrival.CAPTURE_DISTANCE + Kind.CAR_UNDER_TEST.rearAxleBehindFront());
+        if (version.reachesByDistance()) {
+            xml.open("DistanceCondition", "freespace", "false", "rule", "lessThan", "value", tolerance,
+                    "coordinateSystem", "entity", "relativeDistanceType", "euclidianDistance");
+        } else {
+            xml.open("ReachPositionCondition", "tolerance", tolerance);
+        }
         targetPosition(xml, target);
         xml.close().close().close().close();
         xml.close();

@@ -110,9 +110,11 @@ final class Xml {
         return out.toString();
     }
 
-    /** A length or coordinate in metres: to a tenth of a millimetre. */
+    /** The decimals a length or coordinate in metres is written with: to a tenth of a millimetre. */
+    static final int METRE_DECIMALS = 4;
+
     static String metres(double v) {
-        return fixed(v, 4);
+        return fixed(v, METRE_DECIMALS);
     }
 
     /** A heading in radians: a millionth is 5 µm over a car's length. */

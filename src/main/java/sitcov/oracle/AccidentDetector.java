@@ -30,6 +30,7 @@ public final class AccidentDetector implements Steppable {
     private boolean[] touchingMoving;
     private List<Accident> accidents = new ArrayList<>();
     private Map<Blame, Integer> excused = new EnumMap<>(Blame.class);
+    private List<ExcusedContact> excusedContacts = new ArrayList<>();
     private CentreLine centreLine;
     private CentreLineExcuse centreLineExcuse;
     private boolean offRoad;
@@ -86,6 +87,7 @@ public final class AccidentDetector implements Steppable {
                     record(tick, AccidentType.CLASHWITHOTHERCAR, car, other.id());
                 } else {
                     excused.merge(blame, 1, Integer::sum);
+                    excusedContacts.add(new ExcusedContact(tick, blame, car.x(), car.y(), other.id()));
                 }
             }
             touchingMoving[i] = touching;
@@ -155,5 +157,10 @@ public final class AccidentDetector implements Steppable {
 
     public Map<Blame, Integer> excusedContacts() {
         return excused;
+    }
+
+    /** The excused contacts so far, each as it began, in the order they began. */
+    public List<ExcusedContact> excusedContactEvents() {
+        return Collections.unmodifiableList(excusedContacts);
     }
 }

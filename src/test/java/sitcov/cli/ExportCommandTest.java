@@ -144,12 +144,18 @@ class ExportCommandTest {
                 files(dir));
         for (String run : List.of("row-" + n + "-run.xosc", "row-" + n + "-run-fault-free.xosc")) {
             Document doc = parse(dir.resolve(run));
-            assertEquals(column(finding(), row, "external_seed"), parameter(doc, "sitcovExternalSeed"), run);
-            assertEquals(column(finding(), row, "internal_seed"), parameter(doc, "sitcovInternalSeed"), run);
+            assertEquals(column(finding(), row, "external_seed"), egoProperty(doc, "sitcovExternalSeed"), run);
+            assertEquals(column(finding(), row, "internal_seed"), egoProperty(doc, "sitcovInternalSeed"), run);
             assertEquals("row-" + n + ".xodr", text(doc, "/OpenSCENARIO/RoadNetwork/LogicFile/@filepath"), run);
+            // a row's runs are recorded to their ends
+            assertEquals(Long.parseLong(egoProperty(doc, "sitcovTicks")) - 1,
+                    Long.parseLong(egoProperty(doc, "sitcovLastTickRecorded")), run);
         }
-        assertTrue(parameter(parse(dir.resolve("row-" + n + "-run.xosc")), "sitcovFaults").matches(".*\\b4\\b.*"));
-        assertFalse(parameter(parse(dir.resolve("row-" + n + "-run-fault-free.xosc")), "sitcovFaults").matches(".*\\b4\\b.*"));
+        assertTrue(egoProperty(parse(dir.resolve("row-" + n + "-run.xosc")), "sitcovFaults").matches(".*\\b4\\b.*"));
+        assertFalse(egoProperty(parse(dir.resolve("row-" + n + "-run-fault-free.xosc")), "sitcovFaults").matches(".*\\b4\\b.*"));
+        // the row found its fault: the faulty run marks the accident that did, its fault-free twin none
+        assertTrue(egoProperty(parse(dir.resolve("row-" + n + "-run.xosc")), "sitcovFoundBy").startsWith("accident"));
+        assertEquals("", egoProperty(parse(dir.resolve("row-" + n + "-run-fault-free.xosc")), "sitcovFoundBy"));
     }
 
     @Test
@@ -175,14 +181,13 @@ class ExportCommandTest {
             assertEquals(roadFile, text(situation, "/OpenSCENARIO/RoadNetwork/LogicFile/@filepath"));
             Document scenario = parse(dir.resolve(cells[header.indexOf("run_file")]));
             assertEquals(roadFile, text(scenario, "/OpenSCENARIO/RoadNetwork/LogicFile/@filepath"));
-            // the accident that found the fault is among those the recorded run declares, at the tick the index gives
-            boolean declared = false;
-            int count = Integer.parseInt(parameter(scenario, "accidentCount"));
-            for (int k = 1; k <= count; k++) {
-                declared |= parameter(scenario, "accident" + k + "Type").equals(cells[header.indexOf("new_accident")])
-                        && parameter(scenario, "accident" + k + "Tick").equals(cells[header.indexOf("tick")]);
-            }
-            assertTrue(declared, index.get(i + 1) + ": its recorded run declares no such accident at that tick");
+            // the accident that found the fault is marked in the recorded run, by the ego and in its event's name
+            String foundBy = egoProperty(scenario, "sitcovFoundBy");
+            String event = text(scenario, "//Event[starts-with(@name, '" + foundBy + ": ')]/@name");
+            assertTrue(foundBy.startsWith("accident") && event.startsWith(foundBy + ": "
+                    + cells[header.indexOf("new_accident")] + ", ego") && event.contains(" at tick "
+                    + cells[header.indexOf("tick")] + " (") && event.endsWith("; it found the fault"),
+                    index.get(i + 1) + ": its recorded run marks " + foundBy + ", the event " + event);
         }
     }
 
@@ -291,7 +296,8 @@ class ExportCommandTest {
         return (Double) XPathFactory.newInstance().newXPath().evaluate(xpath, doc, XPathConstants.NUMBER);
     }
 
-    private static String parameter(Document doc, String name) throws Exception {
-        return text(doc, "/OpenSCENARIO/ParameterDeclarations/ParameterDeclaration[@name='" + name + "']/@value");
+    /** A property of the ego, where a recorded run tells the run ("" when it has none of that name). */
+    private static String egoProperty(Document doc, String name) throws Exception {
+        return text(doc, "//ScenarioObject[@name='ego']//Property[@name='" + name + "']/@value");
     }
 }

@@ -47,12 +47,22 @@ public final class AsamSchemas {
     }
 
     public static synchronized Schema openScenario(ScenarioVersion version) {
-        return OPEN_SCENARIO.computeIfAbsent(version, v -> load(switch (v) {
+        return OPEN_SCENARIO.computeIfAbsent(version, v -> load(name(v)));
+    }
+
+    /** The schema file of {@code version}, present (the test is skipped, or fails on CI, when it is not). */
+    static Path file(ScenarioVersion version) {
+        openScenario(version);
+        return DIR.resolve(name(version)).toAbsolutePath();
+    }
+
+    private static String name(ScenarioVersion version) {
+        return switch (version) {
             case V1_0 -> "OpenSCENARIO_1_0.xsd";
             case V1_1 -> "OpenSCENARIO_1_1.xsd";
             case V1_2 -> "OpenSCENARIO_1_2.xsd";
             case V1_3 -> "OpenSCENARIO_1_3_1.xsd";
-        }));
+        };
     }
 
     /** Fails, naming {@code what} and the first few errors with their line and column, unless {@code xml} is valid. */

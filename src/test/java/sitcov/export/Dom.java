@@ -21,8 +21,18 @@ final class Dom {
     }
 
     static Element parse(String xml) {
+        return parse(xml, false);
+    }
+
+    /** A document whose elements know their namespace, as a schema's do. */
+    static Element parseNamespaced(String xml) {
+        return parse(xml, true);
+    }
+
+    private static Element parse(String xml, boolean namespaces) {
         try {
             DocumentBuilderFactory factory = DocumentBuilderFactory.newInstance();
+            factory.setNamespaceAware(namespaces);
             factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
             factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
             Document doc = factory.newDocumentBuilder().parse(new InputSource(new StringReader(xml)));

@@ -33,8 +33,8 @@ import sitcov.world.WorldMap;
  * The OpenSCENARIO export read back: every vehicle stands where sitcov has its footprint (the centre, the
  * heading), the ego is sent to the Target, and a recorded run's trajectories, interpolated linearly between the
  * vertices kept, retrace the pose a watcher of the same run saw at every tick, vehicles off the map are teleported
- * off the world, and the run's accidents are declared as parameters (src/main/java/sitcov/export/README.md, "The
- * frame").
+ * off the world, and the run's accidents are declared as the events a player reports them by
+ * (src/main/java/sitcov/export/README.md, "The frame").
  */
 class OpenScenarioRoundTripTest {
     /** A run with both kinds of clash, short enough to check quickly: map 33, its own internal seed, fault 14. */
@@ -76,6 +76,11 @@ class OpenScenarioRoundTripTest {
             problems.addAll(trajectoryProblems(watched, m));
             problems.addAll(accidentProblems(watched, m));
             problems.forEach(p -> failures.add(CLASH_SEED, v + ": " + p));
+            if (!(v.minor() >= 2 ? m.variables() : m.parameters()).keySet().containsAll(m.reported().stream()
+                    .map(ScenarioModel.Reported::variable).toList())) {
+                failures.add(CLASH_SEED, v + ": the events set " + m.reported() + ", not all declared as "
+                        + (v.minor() >= 2 ? "variables " + m.variables() : "parameters " + m.parameters()));
+            }
         }
         failures.assertNone("a recorded run's document matches the run as watched");
     }
@@ -150,12 +155,17 @@ class OpenScenarioRoundTripTest {
             problems.add("the ego's initial speed is " + egoSpeed + ", expected 0");
         }
         Vec2 target = Frame.point(map.layout().target().orElseThrow().position());
-        List<Pose> goals = new ArrayList<>(m.acquiredPositions());
-        goals.addAll(m.reachConditions());
-        if (m.acquiredPositions().isEmpty() || m.reachConditions().isEmpty()
-                || goals.stream().anyMatch(g -> new Vec2(g.x(), g.y()).distanceTo(target) > METRE_TOLERANCE)) {
-            problems.add("the ego's goal " + m.acquiredPositions() + " and stop " + m.reachConditions()
-                    + " are not both the Target at " + target);
+        if (m.reachConditions().isEmpty() || m.reachConditions().stream()
+                .anyMatch(g -> new Vec2(g.x(), g.y()).distanceTo(target) > METRE_TOLERANCE)) {
+            problems.add("the scenario stops at " + m.reachConditions() + ", not at the Target at " + target);
+        }
+        // the route ends on the centre of the Target's lane, level with the Target: at most half a lane from it
+        List<Pose> route = m.routeWaypoints();
+        Pose end = route.isEmpty() ? null : route.get(route.size() - 1);
+        if (end == null || new Vec2(end.x(), end.y()).distanceTo(target) > Dimensions.LANE_WIDTH / 2 + METRE_TOLERANCE
+                || !m.acquiredPositions().isEmpty()) {
+            problems.add("the ego is sent along " + route + " and to " + m.acquiredPositions() + ", not along a route"
+                    + " ending by the Target at " + target);
         }
         return problems;
     }
@@ -370,33 +380,37 @@ class OpenScenarioRoundTripTest {
         return null;
     }
 
+    /**
+     * What differs between the run's accidents and the events the document reports them by: accident k is the event
+     * setting {@code accident<k>}, named by its type and tick, waiting for the ego and the other party to touch from
+     * half a tick before the last sample they were apart, or, with no other party, starting half a tick before the
+     * sample it was seen at; the ego's properties count them.
+     */
     private static List<String> accidentProblems(Watched watched, ScenarioModel m) {
         List<String> problems = new ArrayList<>();
         List<Accident> accidents = watched.result().accidents();
-        Map<String, String> p = m.parameters();
-        if (!String.valueOf(accidents.size()).equals(p.get("accidentCount"))) {
-            problems.add("accidentCount is " + p.get("accidentCount") + ", the run had " + accidents.size());
-            return problems;
+        String counted = m.properties().get("ego").get("sitcovAccidents");
+        if (!String.valueOf(accidents.size()).equals(counted)) {
+            problems.add("the ego's sitcovAccidents is " + counted + ", the run had " + accidents.size());
         }
         for (int k = 1; k <= accidents.size(); k++) {
             Accident a = accidents.get(k - 1);
-            String other = a.otherParty() < 0 ? "none"
+            String other = a.otherParty() < 0 ? null
                     : a.type() == AccidentType.CLASHWITHOBSTACLE ? "parked" + a.otherParty()
                     : watched.movingById().get(a.otherParty());
-            Vec2 at = Frame.point(a.x(), a.y());
-            double time = (a.tick() + 1) * TICK_SECONDS;
-            String declared = p.get("accident" + k + "Type") + " tick " + p.get("accident" + k + "Tick") + " time "
-                    + p.get("accident" + k + "Time") + " at (" + p.get("accident" + k + "X") + ", " + p.get("accident" + k + "Y")
-                    + ") with " + p.get("accident" + k + "Other");
-            boolean same = a.type().name().equals(p.get("accident" + k + "Type"))
-                    && String.valueOf(a.tick()).equals(p.get("accident" + k + "Tick"))
-                    && Math.abs(Double.parseDouble(p.get("accident" + k + "Time")) - time) < 1e-6
-                    && new Vec2(Double.parseDouble(p.get("accident" + k + "X")), Double.parseDouble(p.get("accident" + k + "Y")))
-                            .distanceTo(at) <= METRE_TOLERANCE
-                    && other.equals(p.get("accident" + k + "Other"));
+            String variable = "accident" + k;
+            List<ScenarioModel.Reported> events = m.reported().stream().filter(r -> r.variable().equals(variable)).toList();
+            List<String> touching = other == null ? List.of() : List.of("ego", other);
+            double time = (other == null ? a.tick() + 0.5 : a.tick() - 0.5) * TICK_SECONDS;
+            boolean same = events.size() == 1 && events.get(0).touching().equals(touching)
+                    && Math.abs(events.get(0).time() - time) < 1e-6
+                    && events.get(0).name().startsWith(variable + ": " + a.type() + ", ego")
+                    && events.get(0).name().contains(" at tick " + a.tick() + " ")
+                    && events.get(0).name().contains(String.format(java.util.Locale.ROOT, " at x=%.2f y=%.2f",
+                            Frame.point(a.x(), a.y()).x(), Frame.point(a.x(), a.y()).y()));
             if (!same) {
-                problems.add("accident " + k + " is declared " + declared + ", the run had " + a.type() + " at tick " + a.tick()
-                        + " (" + time + " s) at " + at + " with " + other);
+                problems.add("accident " + k + " is reported by " + events + ", the run had " + a.type() + " at tick "
+                        + a.tick() + (other == null ? "" : " with " + other) + ", so an event at " + time + " s");
             }
         }
         return problems;

@@ -8,13 +8,17 @@ import org.w3c.dom.Element;
 
 /**
  * An OpenSCENARIO document read back with the DOM parser: what the tests compare with sitcov — the header's
- * version, the road file, each entity's bounding box, its Init position and speed, the timed trajectory it follows
- * (vertex times through the trajectory's Timing when it has one), the positions the ego is sent to, the
- * parameters, and each event of the story: whose it is, when it starts, where it teleports and what it follows.
+ * version, the road file, each entity's bounding box and properties, its Init position and speed, the timed
+ * trajectory it follows (vertex times through the trajectory's Timing when it has one), the positions the ego is
+ * sent to (a position to acquire, or a route's waypoints), where the scenario stops, the parameters and variables,
+ * each event of the story: whose it is, when it starts, where it teleports and what it follows, and the events a
+ * player reports an accident or a contact by.
  */
 record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, Box> entities,
-                     Map<String, Pose> initial, Map<String, Double> initialSpeed, List<Event> events,
-                     List<Pose> acquiredPositions, List<Pose> reachConditions, Map<String, String> parameters) {
+                     Map<String, Map<String, String>> properties, Map<String, Pose> initial,
+                     Map<String, Double> initialSpeed, List<Event> events, List<Pose> acquiredPositions,
+                     List<Pose> routeWaypoints, List<Pose> reachConditions, Map<String, String> parameters,
+                     Map<String, String> variables, List<Reported> reported) {
 
     /**
      * A WorldPosition, and the time of its vertex when it is one (NaN otherwise). A vehicle's poses are
@@ -31,6 +35,14 @@ record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, B
     record Event(String entity, String name, double time, List<Pose> teleports, List<List<Pose>> trajectories) {
     }
 
+    /**
+     * An event that sets a variable (a parameter before 1.2) to true when a player sees what it declares: its
+     * variable, its name, when it may start at the earliest, and the two vehicles whose touching starts it (empty
+     * when only the time does).
+     */
+    record Reported(String variable, String name, double time, List<String> touching) {
+    }
+
     List<Event> eventsOf(String entity) {
         return events.stream().filter(e -> e.entity().equals(entity)).toList();
     }
@@ -43,7 +55,11 @@ record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, B
         Element header = Dom.child(root, "FileHeader");
         Element logic = Dom.child(Dom.child(root, "RoadNetwork"), "LogicFile");
         Map<String, Box> entities = new LinkedHashMap<>();
+        Map<String, Map<String, String>> properties = new LinkedHashMap<>();
         for (Element o : Dom.children(Dom.child(root, "Entities"), "ScenarioObject")) {
+            Map<String, String> own = new LinkedHashMap<>();
+            Dom.descendants(o, "Property").forEach(p -> put(own, Dom.text(p, "name"), Dom.text(p, "value")));
+            properties.put(Dom.text(o, "name"), own);
             Element box = Dom.child(Dom.child(o, "Vehicle"), "BoundingBox");
             Element c = Dom.child(box, "Center");
             Element d = Dom.child(box, "Dimensions");
@@ -64,7 +80,9 @@ record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, B
             }
         }
         List<Event> events = new ArrayList<>();
+        List<Reported> reported = new ArrayList<>();
         for (Element event : Dom.descendants(storyboard, "Event")) {
+            reported(event).ifPresent(reported::add);
             List<Element> time = Dom.descendants(Dom.child(event, "StartTrigger"), "SimulationTimeCondition");
             String actor = actor(event);
             Box box = entities.get(actor);
@@ -79,10 +97,40 @@ record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, B
         Map<String, String> parameters = new LinkedHashMap<>();
         Dom.optionalChild(root, "ParameterDeclarations").ifPresent(ps -> Dom.children(ps, "ParameterDeclaration")
                 .forEach(p -> put(parameters, Dom.text(p, "name"), Dom.text(p, "value"))));
+        Map<String, String> variables = new LinkedHashMap<>();
+        Dom.optionalChild(root, "VariableDeclarations").ifPresent(vs -> Dom.children(vs, "VariableDeclaration")
+                .forEach(v -> put(variables, Dom.text(v, "name"), Dom.text(v, "value"))));
+        List<Pose> reach = new ArrayList<>(positionsIn(storyboard, "ReachPositionCondition"));
+        reach.addAll(positionsIn(storyboard, "DistanceCondition"));
         return new ScenarioModel((int) Dom.number(header, "revMajor"), (int) Dom.number(header, "revMinor"),
-                Dom.text(logic, "filepath"), entities, initial, speeds, events,
-                positionsIn(storyboard, "AcquirePositionAction"), positionsIn(storyboard, "ReachPositionCondition"),
-                parameters);
+                Dom.text(logic, "filepath"), entities, properties, initial, speeds, events,
+                positionsIn(storyboard, "AcquirePositionAction"), positionsIn(storyboard, "Waypoint"), reach,
+                parameters, variables, reported);
+    }
+
+    /** The event as a report of an accident or a contact, when it sets a variable or a parameter to true. */
+    private static java.util.Optional<Reported> reported(Element event) {
+        List<Element> sets = new ArrayList<>(Dom.descendants(event, "VariableAction"));
+        sets.addAll(Dom.descendants(event, "ParameterAction"));
+        if (sets.isEmpty()) {
+            return java.util.Optional.empty();
+        }
+        Element set = sets.get(0);
+        String variable = set.hasAttribute("variableRef") ? Dom.text(set, "variableRef") : Dom.text(set, "parameterRef");
+        if (!Dom.text(Dom.child(set, "SetAction"), "value").equals("true")) {
+            throw new AssertionError(Dom.describe(event) + " sets " + variable + " to something other than true");
+        }
+        Element trigger = Dom.child(event, "StartTrigger");
+        List<String> touching = new ArrayList<>();
+        for (Element c : Dom.descendants(trigger, "CollisionCondition")) {
+            Element byEntity = Dom.ancestor(c, "ByEntityCondition").orElseThrow();
+            Dom.descendants(Dom.child(byEntity, "TriggeringEntities"), "EntityRef")
+                    .forEach(r -> touching.add(Dom.text(r, "entityRef")));
+            touching.add(Dom.text(Dom.child(c, "EntityRef"), "entityRef"));
+        }
+        List<Element> time = Dom.descendants(trigger, "SimulationTimeCondition");
+        return java.util.Optional.of(new Reported(variable, Dom.text(event, "name"),
+                time.isEmpty() ? Double.NaN : Dom.number(time.get(0), "value"), touching));
     }
 
     /** The entity an event moves: its ManeuverGroup's one actor. */
@@ -115,7 +163,8 @@ record ScenarioModel(int revMajor, int revMinor, String logicFile, Map<String, B
     private static List<Pose> positionsIn(Element root, String tag) {
         List<Pose> out = new ArrayList<>();
         for (Element e : Dom.descendants(root, tag)) {
-            out.add(pose(Dom.child(Dom.child(e, "Position"), "WorldPosition"), Double.NaN));
+            Dom.optionalChild(e, "Position")
+                    .ifPresent(p -> out.add(pose(Dom.child(p, "WorldPosition"), Double.NaN)));
         }
         return out;
     }

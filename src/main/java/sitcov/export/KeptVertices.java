@@ -11,8 +11,9 @@ import java.util.List;
  * Both ends, so that the same holds for any point of the car a player interpolates (its footprint's centre
  * lies between them), and for a car that turns on the spot about its rear axle. Vertices are written to a
  * millimetre and a ten-thousandth of a radian, and the test is made on those rounded numbers, so that the
- * rounding counts against the tolerance instead of adding to it. Cars that stand or drive straight at a
- * steady speed then cost two vertices, not one a tick.
+ * rounding counts against the tolerance instead of adding to it; the thinning keeps a tenth of a millimetre
+ * of it back for the step a track writes after a turn on the spot (RecordedTrack). Cars that stand or drive
+ * straight at a steady speed then cost two vertices, not one a tick.
  */
 final class KeptVertices {
     static final double POSITION_TOLERANCE = 0.001;
@@ -24,6 +25,8 @@ final class KeptVertices {
     private static final double POSITION_UNIT = 1e-3;
     private static final double HEADING_UNIT = 1e-4;
     private static final double HEADING_TOLERANCE = Math.toRadians(HEADING_TOLERANCE_DEGREES);
+    /** What the thinning leaves to a turn on the spot: a vertex may be nudged a tenth of a millimetre. */
+    private static final double THINNED_TOLERANCE = POSITION_TOLERANCE - POSITION_UNIT / 10;
 
     private KeptVertices() {
     }
@@ -157,8 +160,8 @@ final class KeptVertices {
             for (int i = from + 1; i < to; i++) {
                 double f = (double) (i - from) / (to - from);
                 if (active[i] != active[from]
-                        || Math.hypot(x[i] - (ax + dx * f), y[i] - (ay + dy * f)) > POSITION_TOLERANCE
-                        || Math.hypot(frontX[i] - (afx + dfx * f), frontY[i] - (afy + dfy * f)) > POSITION_TOLERANCE
+                        || Math.hypot(x[i] - (ax + dx * f), y[i] - (ay + dy * f)) > THINNED_TOLERANCE
+                        || Math.hypot(frontX[i] - (afx + dfx * f), frontY[i] - (afy + dfy * f)) > THINNED_TOLERANCE
                         || Math.abs(Math.IEEEremainder(h[i] - (ah + turn * f), 2 * Math.PI)) > HEADING_TOLERANCE) {
                     return false;
                 }

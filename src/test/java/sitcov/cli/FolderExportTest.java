@@ -84,8 +84,8 @@ class FolderExportTest {
                 assertEquals(shared, row.get("run_file"), "rows of fault " + fault + " on one map with one seed");
             }
             Document run = parse(dir.resolve(row.get("run_file")));
-            assertEquals("faults " + fault, parameter(run, "sitcovFaults"), row.get("run_file"));
-            assertEquals(row.get("internal_seed"), parameter(run, "sitcovInternalSeed"), row.get("run_file"));
+            assertEquals("faults " + fault, egoProperty(run, "sitcovFaults"), row.get("run_file"));
+            assertEquals(row.get("internal_seed"), egoProperty(run, "sitcovInternalSeed"), row.get("run_file"));
         }
         assertEquals(Set.of("2", "4"), runOfFault.keySet(), "both faults are found: " + index);
         assertNotEquals(runOfFault.get("2"), runOfFault.get("4"));
@@ -130,8 +130,9 @@ class FolderExportTest {
         return DocumentBuilderFactory.newInstance().newDocumentBuilder().parse(file.toFile());
     }
 
-    private static String parameter(Document doc, String name) throws Exception {
+    /** A property of the car under test, where a recorded run says what it is. */
+    private static String egoProperty(Document doc, String name) throws Exception {
         return XPathFactory.newInstance().newXPath().evaluate(
-                "/OpenSCENARIO/ParameterDeclarations/ParameterDeclaration[@name='" + name + "']/@value", doc);
+                "/OpenSCENARIO/Entities/ScenarioObject[@name='ego']//Property[@name='" + name + "']/@value", doc);
     }
 }

@@ -127,7 +127,7 @@ final class FolderExport {
                 runFile = shared.run(new SameRun(row.map().map(), row.map().internalSeed(), variant, until, Optional.empty()),
                         row, name -> new ExportCommand.Planned(name, () -> OpenScenario.recording(RunRecording.of(map,
                                 row.map().internalSeed(), Set.of(row.fault().orElseThrow()), BuiltinCar.FACTORY)
-                                .until(until), Optional.of(failure), road, version)));
+                                .until(until).cutAfterStandingFor(AFTER_FAILURE_TICKS), Optional.of(failure), road, version)));
             }
             index.add(indexLine(row, verdict, mapName(row.map().map()), runFile));
             progress.done(index.size() - 1);
@@ -231,8 +231,17 @@ final class FolderExport {
                                                        WorldMap map, boolean reference, long until,
                                                        Optional<Accident> found, ScenarioVersion version) {
         Set<Fault> faults = reference ? Set.of() : row.fault().map(Set::of).orElse(Set.of());
-        return new ExportCommand.Planned(name, () -> OpenScenario.recording(RunRecording.replayed(map, r.internalSeed(),
-                r.commands(), r.stopAfter(), faults).until(until), found, roadFile, version));
+        return new ExportCommand.Planned(name, () -> OpenScenario.recording(foundPart(RunRecording.replayed(map,
+                r.internalSeed(), r.commands(), r.stopAfter(), faults), until), found, roadFile, version));
+    }
+
+    /**
+     * The part of a run an export shows: to the end of tick {@code until}; a found run ({@code until} short of
+     * the end), also no more than 5 s after its car stopped for good, as a run that times out standing does.
+     */
+    private static RunRecording foundPart(RunRecording run, long until) {
+        RunRecording part = run.until(until);
+        return until == Long.MAX_VALUE ? part : part.cutAfterStandingFor(AFTER_FAILURE_TICKS);
     }
 
     /** The row judged again; it must give what runs.csv recorded, or the export stops. */

@@ -93,9 +93,10 @@ public final class OpenScenario {
                 + " after " + run.result().ticks() + " ticks" + (run.isCut() ? ", recorded to tick " + run.lastTick() : "")
                 + "; " + (accidents.isEmpty() ? "no accident" : accidents.size() + (accidents.size() == 1
                 ? " accident: " : " accidents, the first ") + describe(run, accidents.get(0)))
-                + finding.map(d -> "; the accident that found the fault: " + d.describe()).orElse(""));
+                + finding.map(d -> "; the accident that found the fault: " + d.describe())
+                .orElse(afterTheEnd(run, found).map(f -> "; the accident that found the fault: " + f).orElse("")));
         ScenarioParts.context(xml, version, DeclaredEvents.variables(declared), roadFile);
-        entities(xml, map, egoProperties(run, finding), List.of(SEGMENT_HEADINGS));
+        entities(xml, map, egoProperties(run, finding, afterTheEnd(run, found)), List.of(SEGMENT_HEADINGS));
         xml.open("Storyboard");
         xml.open("Init").open("Actions");
         for (RunRecording.Track track : run.tracks()) {
@@ -125,7 +126,8 @@ public final class OpenScenario {
     }
 
     /** The ego's properties in a recording: the run, so that a player or a script reads it from the car it drove. */
-    private static List<ScenarioParts.Declaration> egoProperties(RunRecording run, Optional<Declared> finding) {
+    private static List<ScenarioParts.Declaration> egoProperties(RunRecording run, Optional<Declared> finding,
+                                                                 Optional<String> foundAfterTheEnd) {
         List<ScenarioParts.Declaration> out = new ArrayList<>(List.of(EGO_TYPE, SEGMENT_HEADINGS));
         out.add(property("sitcovExternalSeed", Long.toString(run.map().seed())));
         out.add(property("sitcovInternalSeed", Long.toString(run.internalSeed())));
@@ -135,7 +137,18 @@ public final class OpenScenario {
         out.add(property("sitcovLastTickRecorded", Long.toString(run.lastTick())));
         out.add(property("sitcovAccidents", Integer.toString(run.accidents().size())));
         finding.ifPresent(d -> out.add(property("sitcovFoundBy", d.id())));
+        foundAfterTheEnd.ifPresent(f -> out.add(property("sitcovFoundBy", f)));
         return out;
+    }
+
+    /**
+     * The accident that found the fault, in words, where it falls after the recording's end (a run that times
+     * out, recorded to a few seconds after its car stopped for good): no event of the file can show it.
+     */
+    private static Optional<String> afterTheEnd(RunRecording run, Optional<Accident> found) {
+        return found.filter(a -> a.tick() > run.lastTick()).map(a -> a.type().name() + " at tick " + a.tick() + " ("
+                + Xml.fixed(AsamFrame.seconds(a.tick()), 1) + " s), after the recording's end at tick " + run.lastTick()
+                + ": the car under test stood still from then on");
     }
 
     private static ScenarioParts.Declaration property(String name, String value) {

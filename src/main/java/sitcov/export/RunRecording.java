@@ -52,6 +52,23 @@ public record RunRecording(WorldMap map, long internalSeed, Set<Fault> faults, R
                 traffic.stream().filter(c -> c.tick() <= lastTick).toList());
     }
 
+    /**
+     * The same run cut {@code after} ticks after the car under test stopped for good, where that comes before the
+     * recording's end: a car that stands until its timeout would otherwise cost a player the rest of the 1000 s of
+     * traffic around it, which shows nothing more of why it stopped.
+     */
+    public RunRecording cutAfterStandingFor(long after) {
+        List<Sample> ego = tracks.get(0).samples();
+        Sample end = ego.get(ego.size() - 1);
+        int still = ego.size() - 1;
+        while (still > 0 && ego.get(still - 1).equals(end)) {
+            still--;
+        }
+        // sample k is the state after tick k - 1: the car last moved in tick still - 1
+        long cut = still - 1 + after;
+        return cut < lastTick() ? until(cut) : this;
+    }
+
     /** The last tick recorded. */
     public long lastTick() {
         return tracks.get(0).samples().size() - 2;

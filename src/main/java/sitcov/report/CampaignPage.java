@@ -14,11 +14,7 @@ final class CampaignPage {
 
     static String html(CampaignAnalysis a, List<String> verdict) {
         CampaignConfig c = a.config();
-        StringBuilder h = new StringBuilder();
-        h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">")
-                .append("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">")
-                .append("<title>sitcov: ").append(HtmlReport.esc(c.name())).append("</title><style>").append(HtmlReport.CSS)
-                .append("</style></head><body>\n");
+        StringBuilder h = HtmlReport.pageStart(c.name());
         h.append("<h1>").append(HtmlReport.esc(c.name())).append("</h1><p class=\"muted\">campaign · master seed ")
                 .append(c.masterSeed()).append(" · ").append(c.trials()).append(" trials per driver and fault · at most ")
                 .append(c.tickBudget()).append(" ticks a trial · drivers ").append(HtmlReport.esc(String.join(", ", c.drivers())))

@@ -47,13 +47,17 @@ final class HtmlReport {
     private HtmlReport() {
     }
 
+    /** A page of a results folder up to its body: its title, and the style every page shares. */
+    static StringBuilder pageStart(String title) {
+        return new StringBuilder().append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">")
+                .append("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">")
+                .append("<title>sitcov: ").append(esc(title)).append("</title><style>").append(CSS)
+                .append("</style></head><body>\n");
+    }
+
     static String html(Path folder, ExperimentConfig config, List<MapRun> inOrder, ReportPictures pictures)
             throws IOException {
-        StringBuilder h = new StringBuilder();
-        h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">")
-                .append("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">")
-                .append("<title>sitcov: ").append(esc(config.name())).append("</title><style>").append(CSS)
-                .append("</style></head><body>\n");
+        StringBuilder h = pageStart(config.name());
         h.append("<h1>").append(esc(config.name())).append("</h1><p class=\"muted\">master seed ")
                 .append(config.masterSeed()).append(" · ").append(config.replications()).append(" replications · drivers ")
                 .append(esc(String.join(", ", config.drivers()))).append(" · ").append(config.candidates())

@@ -18,11 +18,7 @@ final class RequirementPage {
 
     static String html(CampaignAnalysis a, List<String> verdict) {
         CampaignConfig c = a.config();
-        StringBuilder h = new StringBuilder();
-        h.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">")
-                .append("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">")
-                .append("<title>sitcov: ").append(HtmlReport.esc(c.name())).append("</title><style>").append(HtmlReport.CSS)
-                .append("</style></head><body>\n");
+        StringBuilder h = HtmlReport.pageStart(c.name());
         h.append("<h1>").append(HtmlReport.esc(c.name())).append("</h1><p class=\"muted\">campaign of the requirements of ")
                 .append(HtmlReport.esc(c.controller())).append(" · master seed ").append(c.masterSeed()).append(" · ")
                 .append(c.trials()).append(" trials per driver and requirement · at most ").append(c.tickBudget())

@@ -78,7 +78,7 @@ final class RunCommand implements Command {
             return resume(options, threads, out, err);
         }
         if (options.value("--again").isPresent()) {
-            return again(options, threads, out, err);
+            return RunAgain.run(this, options, threads, out, err);
         }
         if (options.positional().size() != 1) {
             throw new UsageException("run: name one preset, e.g. 'run smoke' or 'run experiments/paper-rq1.properties',"
@@ -113,7 +113,7 @@ final class RunCommand implements Command {
         return start(config, shard(options, config), options, source, threads, out, err);
     }
 
-    private int start(ExperimentConfig config, Shard shard, Options options, String source, int threads, PrintStream out,
+    int start(ExperimentConfig config, Shard shard, Options options, String source, int threads, PrintStream out,
                       PrintStream err) throws UsageException {
         boolean recordAll = options.recordsAll();
         if (options.has("--dry-run")) {
@@ -150,7 +150,7 @@ final class RunCommand implements Command {
         return campaign(c, shard(options, c.trials(), c.name(), "trials", true), options, threads, out, err);
     }
 
-    private int campaign(CampaignConfig c, Shard shard, Options options, int threads, PrintStream out, PrintStream err)
+    int campaign(CampaignConfig c, Shard shard, Options options, int threads, PrintStream out, PrintStream err)
             throws UsageException {
         if (options.has("--record")) {
             throw new UsageException("run: " + c.name() + " is a campaign, whose trials keep the recordings of"
@@ -162,42 +162,6 @@ final class RunCommand implements Command {
         }
         Path folder = folder(options, c.name(), c.masterSeed(), c.trials(), shard);
         return new CampaignRun(drivers, threads, fork, out, err).start(c, shard, folder);
-    }
-
-    /**
-     * {@code run --again DIR}: the experiment or campaign DIR's manifest describes (its shard too), run again
-     * into a new folder; what a refused folder's message advises, since the preset it came from may lie anywhere.
-     */
-    private int again(Options options, int threads, PrintStream out, PrintStream err) throws UsageException {
-        if (!options.positional().isEmpty() || options.has("--resume") || options.has("--seed") || options.has("--shard")
-                || options.has("--replications") || options.has("--controller") || options.has("--variants")) {
-            throw new UsageException("run: --again DIR takes the experiment from DIR's manifest; give only --out, --threads, --record,"
-                    + " --fork and --dry-run beside it.");
-        }
-        Path folder = Path.of(options.value("--again").get());
-        boolean campaign = CampaignManifest.isCampaign(folder);
-        if (!campaign && !Files.isRegularFile(folder.resolve(ResultsFolder.MANIFEST))) {
-            throw new UsageException("run: --again " + Options.shown(folder) + " is not a results folder (it has no "
-                    + ResultsFolder.MANIFEST + "); name the folder whose experiment to run again.");
-        }
-        CampaignConfig c;
-        Shard campaignShard;
-        Manifest manifest;
-        try {
-            CampaignManifest cm = campaign ? CampaignManifest.read(folder) : null;
-            c = campaign ? cm.config() : null;
-            campaignShard = campaign ? cm.shard() : Shard.WHOLE;
-            manifest = campaign ? null : Manifest.read(folder);
-        } catch (IOException e) {
-            throw new UsageException("run: cannot read " + folder + ": " + IoReason.of(e, folder) + ".");
-        } catch (IllegalArgumentException e) {
-            throw new UsageException("run: --again " + folder + ": " + e.getMessage() + ".");
-        }
-        if (campaign) {
-            return campaign(c, campaignShard, options, threads, out, err);
-        }
-        return start(manifest.config(), manifest.shard(), options, folder.resolve(ResultsFolder.MANIFEST).toString(),
-                threads, out, err);
     }
 
     private static ResultsRecorder create(Path folder, Manifest manifest, Map<String, String> execution)

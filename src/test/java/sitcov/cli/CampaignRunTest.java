@@ -9,7 +9,6 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
@@ -50,7 +49,7 @@ class CampaignRunTest {
     @Test
     void eachTrialIsFalsifiedAtItsFirstFoundMapWithTheTicksItsRunsCostUpToThere() throws IOException {
         Path folder = reference();
-        List<Map<String, String>> trials = rows(folder.resolve("campaign.csv"));
+        List<Map<String, String>> trials = ResultsFolders.csvRows(folder.resolve("campaign.csv"));
         assertEquals(2 * 2 * 2, trials.size(), "faults × drivers × trials");
         int falsified = 0;
         int censored = 0;
@@ -61,7 +60,7 @@ class CampaignRunTest {
             long toFailure = -1;
             int maps = 0;
             int foundAt = -1;
-            for (Map<String, String> run : rows(folder.resolve(sub).resolve("runs.csv"))) {
+            for (Map<String, String> run : ResultsFolders.csvRows(folder.resolve(sub).resolve("runs.csv"))) {
                 if (!run.get("replication").equals(t.get("trial")) || !run.get("driver").equals(t.get("driver"))) {
                     continue;
                 }
@@ -99,8 +98,8 @@ class CampaignRunTest {
     @Test
     void theSurvivalStatisticsAreComputedFromTheTrialsAndTheStratifiedTestSumsTheFaults() throws IOException {
         Path folder = reference();
-        List<Map<String, String>> trials = rows(folder.resolve("campaign.csv"));
-        for (Map<String, String> d : rows(folder.resolve("campaign-drivers.csv"))) {
+        List<Map<String, String>> trials = ResultsFolders.csvRows(folder.resolve("campaign.csv"));
+        for (Map<String, String> d : ResultsFolders.csvRows(folder.resolve("campaign-drivers.csv"))) {
             List<Long> failures = new ArrayList<>();
             for (Map<String, String> t : trials) {
                 if (t.get("fault").equals(d.get("fault")) && t.get("driver").equals(d.get("driver"))
@@ -121,7 +120,7 @@ class CampaignRunTest {
         double e = 0;
         double v = 0;
         Map<String, String> all = null;
-        for (Map<String, String> s : rows(folder.resolve("campaign-stats.csv"))) {
+        for (Map<String, String> s : ResultsFolders.csvRows(folder.resolve("campaign-stats.csv"))) {
             if (s.get("fault").equals("ALL")) {
                 all = s;
                 continue;
@@ -264,22 +263,6 @@ class CampaignRunTest {
             assertFalse(r.err().contains("\tat "), "no stack trace: " + r.err());
             assertFalse(Files.exists(out), "nothing was written for " + c.getKey());
         }
-    }
-
-    /** The rows of a CSV file without quoted fields, by column name. */
-    private static List<Map<String, String>> rows(Path csv) throws IOException {
-        List<String> lines = Files.readAllLines(csv);
-        String[] header = lines.get(0).split(",", -1);
-        List<Map<String, String>> rows = new ArrayList<>();
-        for (String line : lines.subList(1, lines.size())) {
-            String[] cells = line.split(",", -1);
-            Map<String, String> row = new HashMap<>();
-            for (int i = 0; i < header.length; i++) {
-                row.put(header[i], cells[i]);
-            }
-            rows.add(row);
-        }
-        return rows;
     }
 
     /** Every result file of the two campaign folders, sub-folders included, is the same byte for byte. */

@@ -8,7 +8,6 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
@@ -38,7 +37,7 @@ class RequirementCampaignTest {
     @Test
     void aTrialStopsAtTheFirstMapOnWhichTheCarMissesTheTargetAndSimulateShowsItMissIt() throws IOException {
         Path folder = reference();
-        List<Map<String, String>> trials = rows(folder.resolve("campaign.csv"));
+        List<Map<String, String>> trials = ResultsFolders.csvRows(folder.resolve("campaign.csv"));
         assertEquals(2 * 2 * 2, trials.size(), "requirements × drivers × trials");
         int falsified = 0;
         for (Map<String, String> t : trials) {
@@ -49,7 +48,7 @@ class RequirementCampaignTest {
             // the trial's maps in its sub-folder's runs.csv: their ticks sum to the ticks to failure, and the last is the found map
             long sum = 0;
             Map<String, String> last = null;
-            for (Map<String, String> run : rows(folder.resolve("requirement-timeout/runs.csv"))) {
+            for (Map<String, String> run : ResultsFolders.csvRows(folder.resolve("requirement-timeout/runs.csv"))) {
                 if (run.get("replication").equals(t.get("trial")) && run.get("driver").equals(t.get("driver"))) {
                     sum += Long.parseLong(run.get("ticks"));
                     last = run;
@@ -76,7 +75,7 @@ class RequirementCampaignTest {
     @Test
     void aRequirementNeverViolatedIsCensoredAtTheBudgetInEveryTrial() throws IOException {
         Path folder = reference();
-        List<Map<String, String>> car = rows(folder.resolve("campaign.csv")).stream()
+        List<Map<String, String>> car = ResultsFolders.csvRows(folder.resolve("campaign.csv")).stream()
                 .filter(t -> t.get("requirement").equals("car")).toList();
         assertEquals(4, car.size());
         for (Map<String, String> t : car) {
@@ -86,7 +85,7 @@ class RequirementCampaignTest {
             assertEquals("ticks", t.get("stopped_by"));
             assertEquals("", t.get("found_map"));
         }
-        for (Map<String, String> d : rows(folder.resolve("campaign-drivers.csv"))) {
+        for (Map<String, String> d : ResultsFolders.csvRows(folder.resolve("campaign-drivers.csv"))) {
             if (d.get("requirement").equals("car")) {
                 assertEquals("0", d.get("falsified"));
                 assertEquals("not reached", d.get("km_median_ticks"));
@@ -158,21 +157,5 @@ class RequirementCampaignTest {
         assertEquals(0, r.exitCode(), r.err());
         ResultsFolders.assertSameCampaign(reference(), copy);
         assertTrue(Files.readString(copy.resolve("campaign.properties")).contains("requirements=car,timeout\n"));
-    }
-
-    /** The rows of a CSV file without quoted fields, by column name. */
-    private static List<Map<String, String>> rows(Path csv) throws IOException {
-        List<String> lines = Files.readAllLines(csv);
-        String[] header = lines.get(0).split(",", -1);
-        List<Map<String, String>> rows = new ArrayList<>();
-        for (String line : lines.subList(1, lines.size())) {
-            String[] cells = line.split(",", -1);
-            Map<String, String> row = new HashMap<>();
-            for (int i = 0; i < header.length; i++) {
-                row.put(header[i], cells[i]);
-            }
-            rows.add(row);
-        }
-        return rows;
     }
 }

@@ -89,8 +89,10 @@ final class Calibration {
     }
 
     void printTable(PrintStream out) {
-        out.printf(Locale.ROOT, "Fault-free calibration: %d maps, external seeds %d..%d, internal seed = external seed,"
-                + " one thread%n%n", runs, firstSeed, firstSeed + runs - 1);
+        // the builtin car with planted faults (--controller builtin:FAULTS) is calibrated as it is, faults and all
+        String kind = controller.contains("'builtin:") ? "Calibration with planted faults" : "Fault-free calibration";
+        out.printf(Locale.ROOT, "%s: %d maps, external seeds %d..%d, internal seed = external seed,"
+                + " one thread%n%n", kind, runs, firstSeed, firstSeed + runs - 1);
         out.printf(Locale.ROOT, "  %-30s %6d%n", "runs", runs);
         row(out, "reached the Target", reached, "target: at least 99%");
         row(out, "any accident (incl. TIMEOUT)", withAccident, "target: at most 1%");

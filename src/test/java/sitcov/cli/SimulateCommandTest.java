@@ -120,6 +120,15 @@ class SimulateCommandTest {
     }
 
     @Test
+    void aCalibrationOfTheBuiltinCarWithPlantedFaultsIsNotCalledFaultFree() {
+        CliRunner result = CliRunner.run("simulate", "--maps", "2", "--summary", "--controller", "builtin:11");
+
+        assertEquals(ExitCode.OK, result.exitCode(), result.err());
+        assertTrue(result.out().startsWith("Calibration with planted faults: 2 maps, external seeds 1..2"), result.out());
+        assertTrue(result.out().contains("--controller 'builtin:11'"), result.out());
+    }
+
+    @Test
     void theCalibrationSummarisesItsRunsAndSaysHowToReproduceThem() {
         CliRunner result = CliRunner.run("simulate", "--maps", "3", "--summary");
 

@@ -16,12 +16,6 @@ public record Estimate(String method, Requirement requirement, int runs, long ti
         return rate > 0 ? halfWidth / rate : Double.POSITIVE_INFINITY;
     }
 
-    /** The same estimate charged {@code spentRuns} runs and {@code spentTicks} ticks (an importance-sampling
-     * estimate is charged its cross-entropy stages too). */
-    public Estimate charged(int spentRuns, long spentTicks) {
-        return new Estimate(method, requirement, spentRuns, spentTicks, failing, rate, low, high, halfWidth, ess);
-    }
-
     /** The standard error the half-width stands for. */
     public double standardError() {
         return halfWidth / Estimators.Z95;

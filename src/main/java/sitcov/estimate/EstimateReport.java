@@ -18,17 +18,18 @@ public final class EstimateReport {
     public EstimateReport(EstimateConfig config, List<Sample> samples) {
         this.config = config;
         List<Sample> mc = samples.stream().filter(s -> s.stage().equals("mc")).toList();
-        List<Sample> is = samples.stream().filter(s -> s.stage().equals("is")).toList();
         List<Sample> ce = samples.stream().filter(s -> s.stage().startsWith("ce-")).toList();
         ceTicks = ce.stream().mapToLong(Sample::ticks).sum();
         ceRuns = ce.size();
+        // the cross-entropy stages' runs are paid for and each stage's mean is unbiased: they count in the estimate
+        List<Sample> is = samples.stream().filter(s -> s.stage().equals("is") || s.stage().startsWith("ce-")).toList();
+        boolean drawn = samples.stream().anyMatch(s -> s.stage().equals("is"));
         for (Requirement r : Requirement.all()) {
             if (!mc.isEmpty()) {
                 estimates.add(Estimators.monteCarlo(mc, r));
             }
-            if (!is.isEmpty()) {
-                Estimate e = Estimators.importanceSampling(is, r);
-                estimates.add(e.charged(e.runs() + ceRuns, e.ticks() + ceTicks));
+            if (drawn) {
+                estimates.add(Estimators.importanceSampling(is, r));
             }
         }
     }
@@ -83,8 +84,8 @@ public final class EstimateReport {
         }
         if (isAny != null) {
             t.add(String.format(Locale.ROOT, "Importance sampling: %d runs, %d ticks (%d runs and %d ticks of them in"
-                    + " %d cross-entropy stages); effective sample size %.1f of %d final runs.", isAny.runs(), isAny.ticks(),
-                    ceRuns, ceTicks, config.ceStages(), isAny.ess(), isAny.runs() - ceRuns));
+                    + " %d cross-entropy stages, counted in the estimate); effective sample size %.1f of %d runs.",
+                    isAny.runs(), isAny.ticks(), ceRuns, ceTicks, config.ceStages(), isAny.ess(), isAny.runs()));
         }
         t.add("");
         t.add(String.format(Locale.ROOT, "%-20s %-38s %-38s %s", "requirement", "plain Monte Carlo [95% CI] (failing)",
@@ -109,7 +110,7 @@ public final class EstimateReport {
         }
         return String.format(Locale.ROOT, "Any failure: plain Monte Carlo %.3f%% ± %.1f%% (relative), importance sampling"
                         + " %.3f%% ± %.1f%%; the two %s. At equal relative half-width importance sampling needs %s ticks"
-                        + " (%s runs) than plain Monte Carlo, its cross-entropy stages counted.",
+                        + " (%s runs) than plain Monte Carlo, its cross-entropy stages included.",
                 100 * mc.rate(), 100 * mc.relativeHalfWidth(), 100 * is.rate(), 100 * is.relativeHalfWidth(),
                 agree(mc, is) ? "agree within their intervals" : "DISAGREE", times(ticksRatio(mc, is)), times(runsRatio(mc, is)));
     }

@@ -25,11 +25,12 @@ public final class Estimators {
 
     /**
      * Importance sampling: the mean of w·1{failed} over the runs, w = p_nominal / p_proposal. Each
-     * replication drew its runs from a proposal of its own, so the variance is summed over
-     * replications (strata), each from its runs' sample variance; the interval is normal, cut at 0.
+     * stage of each replication drew its runs from a proposal of its own, fixed before the stage
+     * began, so each stage's mean is an unbiased estimate and the variance is summed over them
+     * (strata), each from its runs' sample variance; the interval is normal, cut at 0.
      */
     public static Estimate importanceSampling(List<Sample> samples, Requirement requirement) {
-        Map<Integer, double[]> strata = new TreeMap<>(); // replication -> {n, Σx, Σx²}
+        Map<String, double[]> strata = new TreeMap<>(); // replication and stage -> {n, Σx, Σx²}
         double sumW = 0;
         double sumW2 = 0;
         int failing = 0;
@@ -37,7 +38,7 @@ public final class Estimators {
             double w = s.weight();
             double x = s.failed(requirement) ? w : 0;
             failing += x > 0 ? 1 : 0;
-            double[] m = strata.computeIfAbsent(s.replication(), r -> new double[3]);
+            double[] m = strata.computeIfAbsent(s.replication() + ":" + s.stage(), r -> new double[3]);
             m[0]++;
             m[1] += x;
             m[2] += x * x;

@@ -14,11 +14,15 @@ import sitcov.world.DrawTrace;
 
 class EstimatorsTest {
     static Sample sample(int replication, double logNominal, double logProposal, boolean failed) {
+        return sample(replication, "is", logNominal, logProposal, failed);
+    }
+
+    static Sample sample(int replication, String stage, double logNominal, double logProposal, boolean failed) {
         int[][] bins = new int[DrawSite.values().length][];
         for (DrawSite s : DrawSite.values()) {
             bins[s.ordinal()] = new int[s.bins()];
         }
-        return new Sample(replication, "is", 0, 0, new DrawTrace(logNominal, logProposal, bins), 100,
+        return new Sample(replication, stage, 0, 0, new DrawTrace(logNominal, logProposal, bins), 100,
                 failed ? -1 : 1, failed ? Set.of(Failure.TIMEOUT) : Set.of());
     }
 
@@ -81,6 +85,25 @@ class EstimatorsTest {
         assertEquals(0.25, e.rate(), 1e-12);
         // stratum 0: its runs vary by 0.5·0.5·10/9, its mean by a tenth of that; stratum 1 not at all; each weighs (10/20)²
         double variance = (0.5 * 0.5) * (0.25 * 10 / 9) / 10;
+        assertEquals(1.959963984540054 * Math.sqrt(variance), e.halfWidth(), 1e-12);
+    }
+
+    @Test
+    void theStagesOfOneReplicationAreStrataToo() {
+        // each stage drew from a proposal of its own: a cross-entropy stage from the generator (weight 1), the final
+        // stage from a proposal that draws the failing maps 4 times as often (weight 1/4 on them)
+        List<Sample> runs = new ArrayList<>();
+        for (int i = 0; i < 10; i++) {
+            runs.add(sample(0, "ce-1", 0, 0, i < 1));
+            runs.add(sample(0, "is", 0, Math.log(4), i < 4));
+        }
+        Estimate e = Estimators.importanceSampling(runs, new Requirement.Any());
+        // the pooled mean of w·1{failed}: (1 + 4 / 4) / 20
+        assertEquals(0.1, e.rate(), 1e-12);
+        // ce-1: mean 0.1, sample variance (1 - 10·0.01) / 9 = 0.1; is: mean 0.1, sample variance 4·(1/16 - 0.01·10/4) / 9
+        double ceVariance = 0.1;
+        double isVariance = (4 * 0.0625 - 10 * 0.01) / 9;
+        double variance = 0.25 * ceVariance / 10 + 0.25 * isVariance / 10;
         assertEquals(1.959963984540054 * Math.sqrt(variance), e.halfWidth(), 1e-12);
     }
 

@@ -12,10 +12,11 @@ public record Recording(RunKey key, long externalSeed, long internalSeed, Outcom
                         CommandLog commands) {
     /**
      * A run of a results folder: the map of {@code driver}'s {@code mapIndex} in {@code replication},
-     * run by the reference ({@code variant} 0) or by the variant with that id.
+     * run by the reference ({@code variant} {@link #REFERENCE}) or by the variant with that id.
      */
     public record RunKey(int replication, String driver, int mapIndex, int variant) {
-        public static final int REFERENCE = 0;
+        /** The reference's: no variant's id, which is never negative (fault 0 is a variant's id 0). */
+        public static final int REFERENCE = -1;
 
         /** The file name of its recording: {@code r1-random-m12-v3.jsonl.gz}, {@code -ref} for the reference. */
         public String fileName() {

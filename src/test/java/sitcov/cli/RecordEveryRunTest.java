@@ -65,6 +65,26 @@ class RecordEveryRunTest {
     }
 
     @Test
+    void theReferenceAndTheVariantOfFaultZeroAreRecordedApart(@TempDir Path dir) throws Exception {
+        // fault 0 is a variant whose id is 0: its recording must not take the reference's place
+        Path out = dir.resolve("zero");
+        CliRunner run = CliRunner.run("versions", "--reference", "builtin", "--variants", "builtin:0", "--maps", "2",
+                "--threads", "2", "--out", out.toString(), "--record", "all");
+        assertEquals(ExitCode.OK, run.exitCode(), run.err());
+        List<ResultsRows.Row> rows = ResultsRows.all(out);
+        assertTrue(rows.stream().anyMatch(r -> r.outcome().isPresent()
+                        && r.outcome().get().run().ticks() != r.map().faultFree().ticks()),
+                "the case this test needs: a run of fault 0 that differs from the reference's");
+        for (ResultsRows.Row row : rows) {
+            Path file = FolderRecordings.file(out, FolderRecordings.key(row, row.variant().isEmpty()));
+            var header = sitcov.recording.RecordingFile.read(file);
+            var recorded = row.outcome().map(o -> o.run()).orElse(row.map().faultFree());
+            assertEquals(recorded.outcome(), header.outcome(), file.getFileName() + " holds row " + row.number() + "'s run");
+            assertEquals(recorded.ticks(), header.ticks(), file.getFileName() + " holds row " + row.number() + "'s run");
+        }
+    }
+
+    @Test
     void recordTakesFailuresOrAllAndIsRefusedWhereItHasNoMeaning(@TempDir Path dir) {
         CliRunner wrong = versions(dir.resolve("x"), "--record", "passes");
         assertEquals(ExitCode.USAGE, wrong.exitCode());

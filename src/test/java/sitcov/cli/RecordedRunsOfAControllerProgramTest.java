@@ -60,7 +60,7 @@ class RecordedRunsOfAControllerProgramTest {
         assertEquals(ExitCode.OK, r.exitCode(), r.err());
         for (Path rec : recordings(whole)) {
             Recording header = RecordingFile.read(rec);
-            String controller = driver + (header.key().variant() == 0 ? " --bug late-brake" : " --bug blind-pass");
+            String controller = driver + (header.key().variant() == Recording.RunKey.REFERENCE ? " --bug late-brake" : " --bug blind-pass");
             Path trace = dir.resolve("live-" + rec.getFileName() + ".csv");
             CliRunner live = CliRunner.run("simulate", "--seed", Long.toString(header.externalSeed()), "--internal-seed",
                     Long.toString(header.internalSeed()), "--controller", controller, "--trace", trace.toString());

@@ -35,16 +35,19 @@ final class Calibration {
     private final Map<Outcome, Integer> controllerFailed = new EnumMap<>(Outcome.class);
     private final List<Long> controllerSeeds = new ArrayList<>();
     private final String controller;
+    private final boolean plantedFaults;
 
     /**
      * The calibration of the controller {@code controller} names: the options that run it again, as
-     * {@link #controllerArgs} gives them (empty for the builtin car).
+     * {@link #controllerArgs} gives them (empty for the builtin car); {@code plantedFaults} when it is
+     * the builtin car with faults switched on ({@code builtin:FAULTS}), calibrated faults and all.
      */
-    Calibration(long firstSeed, int maps, boolean summaryOnly, String controller) {
+    Calibration(long firstSeed, int maps, boolean summaryOnly, String controller, boolean plantedFaults) {
         this.firstSeed = firstSeed;
         this.maps = maps;
         this.summaryOnly = summaryOnly;
         this.controller = controller;
+        this.plantedFaults = plantedFaults;
         for (AccidentType t : AccidentType.values()) {
             events.put(t, 0L);
             runsWith.put(t, 0);
@@ -89,8 +92,7 @@ final class Calibration {
     }
 
     void printTable(PrintStream out) {
-        // the builtin car with planted faults (--controller builtin:FAULTS) is calibrated as it is, faults and all
-        String kind = controller.contains("'builtin:") ? "Calibration with planted faults" : "Fault-free calibration";
+        String kind = plantedFaults ? "Calibration with planted faults" : "Fault-free calibration";
         out.printf(Locale.ROOT, "%s: %d maps, external seeds %d..%d, internal seed = external seed,"
                 + " one thread%n%n", kind, runs, firstSeed, firstSeed + runs - 1);
         out.printf(Locale.ROOT, "  %-30s %6d%n", "runs", runs);

@@ -277,8 +277,9 @@ final class SimulateCommand implements Command {
         java.util.OptionalInt timeout = options.has("--tick-timeout")
                 ? java.util.OptionalInt.of(options.count("--tick-timeout", 1, Integer.MAX_VALUE).orElseThrow())
                 : java.util.OptionalInt.empty();
-        Calibration calibration = new Calibration(first, maps, !perRun, Calibration.controllerArgs(
-                options.value("--controller").orElse("builtin"), timeout));
+        String named = options.value("--controller").orElse("builtin");
+        Calibration calibration = new Calibration(first, maps, !perRun, Calibration.controllerArgs(named, timeout),
+                named.startsWith("builtin:"));
         RunGallery gallery = null;
         if (options.value("--gallery").isPresent()) {
             Path folder = Path.of(options.value("--gallery").get());

@@ -29,21 +29,13 @@ import sitcov.results.Manifest;
 class CampaignRunTest {
     private static final String TINY = "src/test/resources/presets/campaign-tiny.properties";
     private static final long BUDGET = 10_000;
-    private static Path reference;
 
     @TempDir
     Path dir;
 
-    /** The tiny campaign run once, on 2 threads, shared by the tests that only read it. */
-    static synchronized Path reference() throws IOException {
-        if (reference == null) {
-            Path folder = Files.createTempDirectory("campaign-reference").resolve("run");
-            CliRunner r = CliRunner.run("run", TINY, "--out", folder.toString(), "--threads", "2");
-            assertEquals(0, r.exitCode(), r.err());
-            assertTrue(r.out().contains("Verdict"), "run prints the campaign's verdict: " + r.out());
-            reference = folder;
-        }
-        return reference;
+    /** The tiny campaign run once, shared by the tests that only read it. */
+    static Path reference() throws IOException {
+        return ResultsFolders.ranOnce(TINY);
     }
 
     @Test

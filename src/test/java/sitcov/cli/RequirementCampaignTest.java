@@ -17,21 +17,13 @@ import org.junit.jupiter.api.io.TempDir;
 class RequirementCampaignTest {
     private static final String TINY = "src/test/resources/presets/requirement-tiny.properties";
     private static final long BUDGET = 12_000;
-    private static Path reference;
 
     @TempDir
     Path dir;
 
-    /** The tiny requirement campaign run once, whole, on 2 threads. */
-    private static synchronized Path reference() throws IOException {
-        if (reference == null) {
-            Path folder = Files.createTempDirectory("requirement-reference").resolve("run");
-            CliRunner r = CliRunner.run("run", TINY, "--out", folder.toString(), "--threads", "2");
-            assertEquals(0, r.exitCode(), r.err());
-            assertTrue(r.out().contains("Verdict"), r.out());
-            reference = folder;
-        }
-        return reference;
+    /** The tiny campaign run once, shared by the tests that only read it. */
+    static Path reference() throws IOException {
+        return ResultsFolders.ranOnce(TINY);
     }
 
     @Test

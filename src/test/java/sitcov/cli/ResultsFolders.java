@@ -20,20 +20,30 @@ import sitcov.results.ResultsFolder;
 /** Fixtures for tests of results folders: the tiny preset's reference run, and byte-for-byte comparison. */
 final class ResultsFolders {
     static final String TINY = "src/test/resources/presets/tiny.properties";
-    private static Path reference;
+    private static final java.util.Map<String, Path> RAN = new java.util.HashMap<>();
 
     private ResultsFolders() {
     }
 
     /** The tiny preset run once, whole and uninterrupted, shared by the tests that compare against it. */
-    static synchronized Path tinyReference() throws IOException {
-        if (reference == null) {
-            Path dir = Files.createTempDirectory("sitcov-tiny-reference");
-            CliRunner r = CliRunner.run("run", TINY, "--out", dir.resolve("whole").toString(), "--threads", "2");
+    static Path tinyReference() throws IOException {
+        return ranOnce(TINY);
+    }
+
+    /**
+     * {@code preset} run once, whole, on 2 threads, into a folder of its own, shared by the tests that
+     * only read it; the run must succeed and print its verdict.
+     */
+    static synchronized Path ranOnce(String preset) throws IOException {
+        Path folder = RAN.get(preset);
+        if (folder == null) {
+            folder = Files.createTempDirectory("sitcov-reference").resolve("whole");
+            CliRunner r = CliRunner.run("run", preset, "--out", folder.toString(), "--threads", "2");
             assertEquals(0, r.exitCode(), r.err());
-            reference = dir.resolve("whole");
+            assertTrue(r.out().contains("Verdict"), "run prints the verdict: " + r.out());
+            RAN.put(preset, folder);
         }
-        return reference;
+        return folder;
     }
 
     /** The files of a folder that hold results (everything but the timed files), as paths within it, sorted. */

@@ -20,7 +20,17 @@ import sitcov.stats.KaplanMeier;
  */
 public record CampaignTrial(CampaignTarget target, String driver, int trial, long campaignSeed, String streamLabel,
                             boolean falsified, long ticksToFailure, long survivalTicks, int mapsRun, StopReason stop,
-                            Optional<MapRun> found, Optional<Failure> accident) {
+                            Optional<FoundMap> found, Optional<Failure> accident) {
+    /**
+     * The map that falsified the target, as campaign.csv keeps it: enough to replay it ({@code map} is its
+     * {@link sitcov.experiment.MapId}'s text) and to count it as a distinct failure.
+     */
+    public record FoundMap(int mapIndex, String map, long externalSeed, long internalSeed, int cell) {
+        static FoundMap of(MapRun run) {
+            return new FoundMap(run.mapIndex(), run.map().text(), run.externalSeed(), run.internalSeed(), run.cell());
+        }
+    }
+
     /** The trial as {@code run} (one driver's share of replication {@code trial}) recorded it. */
     public static CampaignTrial of(CampaignTarget target, int trial, long campaignSeed, String streamLabel, long tickBudget,
                                    DriverRun run) {
@@ -32,7 +42,7 @@ public record CampaignTrial(CampaignTarget target, String driver, int trial, lon
             if (target.falsifiedOn(m)) {
                 boolean within = spent <= tickBudget;
                 return new CampaignTrial(target, run.driver(), trial, campaignSeed, streamLabel, within, spent,
-                        within ? spent : tickBudget, maps, run.spend().stoppedBy(), Optional.of(m), target.failureOn(m));
+                        within ? spent : tickBudget, maps, run.spend().stoppedBy(), Optional.of(FoundMap.of(m)), target.failureOn(m));
             }
         }
         return new CampaignTrial(target, run.driver(), trial, campaignSeed, streamLabel, false, spent,

@@ -10,6 +10,7 @@ import sitcov.analysis.Summary;
 import sitcov.builtin.BuiltinCar;
 import sitcov.report.CampaignFinisher;
 import sitcov.report.ResultsFinisher;
+import sitcov.results.CampaignManifest;
 import sitcov.results.Manifest;
 import sitcov.results.ResultsFolder;
 
@@ -40,17 +41,22 @@ final class ReportCommand implements Command {
             throw new UsageException("report: name one results folder, e.g. 'report target/results/smoke-seed1'.");
         }
         Path folder = Path.of(options.positional().get(0));
-        boolean campaign = sitcov.results.CampaignManifest.isCampaign(folder);
+        boolean campaign = CampaignManifest.isCampaign(folder);
         if (!campaign && !Files.isRegularFile(folder.resolve(sitcov.results.ResultsFolder.MANIFEST))) {
             throw new UsageException("report: " + Options.shown(folder) + " is not a results folder (it has no "
                     + sitcov.results.ResultsFolder.MANIFEST + "); name the folder 'run' wrote.");
         }
         try {
             if (campaign) {
-                // a campaign's own files, written again from its faults' sub-folders (experiments/README.md,
-                // "Campaigns: falsifying one version")
-                if (!sitcov.results.CampaignManifest.read(folder).checked()) {
-                    err.println("sitcov: report: " + sitcov.results.CampaignManifest.uncheckedWarning(folder) + ".");
+                // a campaign's own files, written again from its faults' sub-folders, or from campaign.csv where the
+                // folder keeps only that (experiments/README.md, "Campaigns: falsifying one version")
+                CampaignManifest manifest = CampaignManifest.read(folder);
+                if (!manifest.checked()) {
+                    err.println("sitcov: report: " + CampaignManifest.uncheckedWarning(folder) + ".");
+                }
+                if (manifest.complete() && CampaignFinisher.keepsOnlyTrials(folder, manifest.config())) {
+                    out.println("report: " + folder + " keeps campaign.csv but not its sub-folders; every other file is"
+                            + " computed again from the trials campaign.csv holds.");
                 }
                 CampaignFinisher.report(folder);
             } else {

@@ -1,6 +1,7 @@
 package sitcov.report;
 
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -77,12 +78,16 @@ public final class CampaignFinisher {
     }
 
     /**
-     * The campaign's trials, read from each target's complete sub-folder.
+     * The campaign's trials, read from each target's complete sub-folder, or from campaign.csv when the folder
+     * {@linkplain #keepsOnlyTrials keeps only that}.
      *
      * @throws IllegalArgumentException when a sub-folder is missing, incomplete, changed by hand or of another campaign
      */
     public static CampaignAnalysis analyse(Path folder, CampaignManifest manifest) throws IOException {
         CampaignConfig c = manifest.config();
+        if (keepsOnlyTrials(folder, c)) {
+            return CampaignAnalysis.of(c, CampaignCsv.readTrials(c, folder.resolve(CampaignCsv.TRIALS)));
+        }
         List<CampaignTrial> trials = new ArrayList<>();
         for (CampaignTarget f : c.targets()) {
             Path sub = folder.resolve(f.folder());
@@ -103,6 +108,16 @@ public final class CampaignFinisher {
         trials.sort(Comparator.comparingInt((CampaignTrial t) -> t.target().order()).thenComparingInt(t -> c.drivers().indexOf(t.driver()))
                 .thenComparingInt(CampaignTrial::trial));
         return CampaignAnalysis.of(c, trials);
+    }
+
+    /**
+     * Whether the folder keeps campaign.csv but none of its targets' sub-folders, as a published campaign does (the
+     * sub-folders hold every map's runs and situations, hundreds of MB): every statistic is computed from the
+     * trials, which campaign.csv holds whole, so its other files can still be written again.
+     */
+    public static boolean keepsOnlyTrials(Path folder, CampaignConfig c) {
+        return Files.isRegularFile(folder.resolve(CampaignCsv.TRIALS))
+                && c.targets().stream().noneMatch(t -> Files.exists(folder.resolve(t.folder())));
     }
 
     /** Refuses a sub-folder that is not the experiment (and shard) the campaign implies for {@code target}. */

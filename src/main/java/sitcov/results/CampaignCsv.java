@@ -1,12 +1,20 @@
 package sitcov.results;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.OptionalDouble;
 import sitcov.analysis.CampaignAnalysis;
 import sitcov.analysis.CampaignTrial;
 import sitcov.analysis.PairedTrials;
+import sitcov.experiment.CampaignConfig;
+import sitcov.experiment.CampaignTarget;
+import sitcov.experiment.StopReason;
+import sitcov.oracle.Failure;
 
 /**
  * A campaign's own tables (experiments/README.md, "Campaigns: falsifying one version"): {@code campaign.csv}, one row
@@ -26,10 +34,9 @@ public final class CampaignCsv {
 
     public static List<String> trials(CampaignAnalysis a) {
         List<String> rows = new ArrayList<>();
-        rows.add(a.config().targets().get(0).column() + ",driver,trial,campaign_seed,stream,falsified,ticks_to_failure,survival_ticks,maps_run,stopped_by,"
-                + "found_map_index,found_map,found_external_seed,found_internal_seed,found_cell,found_accident");
+        rows.add(trialsHeader(a.config()));
         for (CampaignTrial t : a.trials()) {
-            String found = t.found().map(m -> m.mapIndex() + "," + m.map().text() + "," + m.externalSeed() + ","
+            String found = t.found().map(m -> m.mapIndex() + "," + m.map() + "," + m.externalSeed() + ","
                     + m.internalSeed() + "," + m.cell()).orElse(",,,,");
             rows.add(String.join(",", t.target().key(), t.driver(), Integer.toString(t.trial()),
                     Long.toString(t.campaignSeed()), t.streamLabel(), Boolean.toString(t.falsified()),
@@ -37,6 +44,55 @@ public final class CampaignCsv {
                     t.stop().key(), found, t.accident().map(x -> x.column()).orElse("")));
         }
         return rows;
+    }
+
+    private static String trialsHeader(CampaignConfig c) {
+        return c.targets().get(0).column() + ",driver,trial,campaign_seed,stream,falsified,ticks_to_failure,survival_ticks,"
+                + "maps_run,stopped_by,found_map_index,found_map,found_external_seed,found_internal_seed,found_cell,found_accident";
+    }
+
+    /**
+     * The trials of campaign {@code c} as {@link #trials} wrote them into {@code file}, so that a folder that keeps
+     * only campaign.csv of its sub-folders can still have its other tables computed again.
+     *
+     * @throws IllegalArgumentException when the file is not such a campaign.csv of {@code c}
+     */
+    public static List<CampaignTrial> readTrials(CampaignConfig c, Path file) throws IOException {
+        List<String> lines = Files.readAllLines(file);
+        if (lines.isEmpty() || !lines.get(0).equals(trialsHeader(c))) {
+            throw new IllegalArgumentException(file + " is not the campaign.csv of this campaign (its header differs);"
+                    + " put back the file the campaign wrote");
+        }
+        List<CampaignTrial> trials = new ArrayList<>();
+        for (int i = 1; i < lines.size(); i++) {
+            try {
+                trials.add(trial(c, lines.get(i)));
+            } catch (RuntimeException e) {
+                throw new IllegalArgumentException(file + ", row " + (i + 1) + ", is not a trial this campaign wrote ("
+                        + e.getMessage() + "); put back the file the campaign wrote");
+            }
+        }
+        return trials;
+    }
+
+    private static CampaignTrial trial(CampaignConfig c, String line) {
+        String[] f = line.split(",", -1);
+        if (f.length != 16) {
+            throw new IllegalArgumentException(f.length + " cells where there are 16");
+        }
+        CampaignTarget target = c.targets().stream().filter(t -> t.key().equals(f[0])).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("no target " + f[0]));
+        if (!c.drivers().contains(f[1])) {
+            throw new IllegalArgumentException("no driver " + f[1]);
+        }
+        Optional<CampaignTrial.FoundMap> found = f[10].isEmpty() ? Optional.empty()
+                : Optional.of(new CampaignTrial.FoundMap(Integer.parseInt(f[10]), f[11], Long.parseLong(f[12]),
+                        Long.parseLong(f[13]), Integer.parseInt(f[14])));
+        Optional<Failure> accident = f[15].isEmpty() ? Optional.empty()
+                : Optional.of(Failure.valueOf(f[15].toUpperCase(Locale.ROOT)));
+        return new CampaignTrial(target, f[1], Integer.parseInt(f[2]), Long.parseLong(f[3]), f[4],
+                Boolean.parseBoolean(f[5]), Long.parseLong(f[6]), Long.parseLong(f[7]), Integer.parseInt(f[8]),
+                StopReason.ofKey(f[9]), found, accident);
     }
 
     public static List<String> drivers(CampaignAnalysis a) {

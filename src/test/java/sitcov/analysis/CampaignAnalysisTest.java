@@ -5,23 +5,15 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.CampaignTarget;
-import sitcov.experiment.MapId;
-import sitcov.experiment.MapRun;
 import sitcov.experiment.StopReason;
 import sitcov.faults.Fault;
-import sitcov.judge.Detection;
-import sitcov.judge.FaultOutcome;
 import sitcov.judge.FaultyRuns;
-import sitcov.judge.RunSummary;
-import sitcov.oracle.AccidentType;
-import sitcov.oracle.Outcome;
 
 /**
  * A campaign whose two faults each separate the drivers, in opposite directions: driver a falsifies fault
@@ -34,15 +26,8 @@ class CampaignAnalysisTest {
 
     private static CampaignTrial trial(sitcov.judge.Variant f, String driver, int trial, boolean falsified, long ticks) {
         CampaignTarget target = new CampaignTarget.OfVariant(f);
-        Optional<MapRun> found = Optional.empty();
-        if (falsified) {
-            List<Long> none = Collections.nCopies(AccidentType.values().length, 0L);
-            RunSummary run = new RunSummary(Outcome.STOPPED_AT_VERDICT, ticks, none);
-            FaultOutcome hit = new FaultOutcome(f, run, true, true, 1, Detection.FOUND, Optional.of(sitcov.oracle.Failure.LEAVEROAD),
-                    true);
-            found = Optional.of(new MapRun(trial, driver, 0, 0, new MapId.Seeded(trial), trial, trial, trial, List.of(), run,
-                    List.of(hit)));
-        }
+        Optional<CampaignTrial.FoundMap> found = falsified
+                ? Optional.of(new CampaignTrial.FoundMap(0, "seed:" + trial, trial, trial, trial)) : Optional.empty();
         return new CampaignTrial(target, driver, trial, 7, "replication-" + trial, falsified, ticks, ticks, 1,
                 falsified ? StopReason.FALSIFIED : StopReason.TICKS, found,
                 falsified ? Optional.of(sitcov.oracle.Failure.LEAVEROAD) : Optional.empty());

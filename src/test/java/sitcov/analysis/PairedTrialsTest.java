@@ -4,22 +4,16 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.CampaignTarget;
-import sitcov.experiment.MapId;
-import sitcov.experiment.MapRun;
 import sitcov.experiment.StopReason;
 import sitcov.judge.FaultyRuns;
 import sitcov.judge.Requirement;
-import sitcov.judge.RunSummary;
-import sitcov.oracle.AccidentType;
 import sitcov.oracle.Failure;
-import sitcov.oracle.Outcome;
 
 /**
  * A campaign of two requirements over 10 paired trials, budget 1000. Timeout: a falsifies trials 0..7 (at 100 (t + 1)
@@ -35,10 +29,8 @@ class PairedTrialsTest {
             return new CampaignTrial(target, driver, t, 7, "replication-" + t, false, 1000, 1000, 40, StopReason.TICKS,
                     Optional.empty(), Optional.empty());
         }
-        RunSummary run = new RunSummary(Outcome.TIMEOUT, 5000, Collections.nCopies(AccidentType.values().length, 1L));
-        MapRun map = new MapRun(t, driver, maps - 1, maps - 1, new MapId.Seeded(t), t, t, t, List.of(), run, List.of());
         return new CampaignTrial(target, driver, t, 7, "replication-" + t, true, ticks, ticks, maps, StopReason.FALSIFIED,
-                Optional.of(map), Optional.of(Failure.TIMEOUT));
+                Optional.of(new CampaignTrial.FoundMap(maps - 1, "seed:" + t, t, t, t)), Optional.of(Failure.TIMEOUT));
     }
 
     private static CampaignAnalysis analysis() {

@@ -140,6 +140,35 @@ class CampaignRunTest {
         assertSame(reference(), one);
     }
 
+    @Test
+    void aFolderThatKeepsOnlyCampaignCsvHasEveryOtherFileWrittenAgainFromItsTrials() throws IOException {
+        Path kept = dir.resolve("kept");
+        ResultsFolders.copyCampaignTrials(reference(), kept);
+        CliRunner r = CliRunner.run("report", kept.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.out().contains("keeps campaign.csv but not its sub-folders"), r.out());
+        ResultsFolders.assertSameCampaignFiles(reference(), kept);
+    }
+
+    @Test
+    void aCampaignCsvChangedByHandIsRefusedNamingItsRowAndNothingIsWritten() throws IOException {
+        Path kept = dir.resolve("kept");
+        ResultsFolders.copyCampaignTrials(reference(), kept);
+        Path trials = kept.resolve("campaign.csv");
+        List<String> lines = new java.util.ArrayList<>(Files.readAllLines(trials));
+        String[] cells = lines.get(3).split(",", -1);
+        cells[6] = "many";
+        lines.set(3, String.join(",", cells));
+        Files.write(trials, lines);
+        byte[] before = Files.readAllBytes(trials);
+        CliRunner r = CliRunner.run("report", kept.toString());
+        assertEquals(ExitCode.USAGE, r.exitCode(), r.err());
+        assertTrue(r.err().contains("campaign.csv, row 4, is not a trial this campaign wrote"), r.err());
+        assertFalse(r.err().contains("\tat "), "no stack trace: " + r.err());
+        assertArrayEquals(before, Files.readAllBytes(trials));
+        assertFalse(Files.exists(kept.resolve("verdict.txt")), "no verdict written from a changed campaign.csv");
+    }
+
     /** Starts the campaign's trials of {@code fault} into its sub-folder as run does, stopped as a kill would after {@code maps} maps. */
     private static void killed(CampaignConfig campaign, Path folder, CampaignTarget fault, int maps) throws Exception {
         ExperimentConfig config = campaign.trialsOf(fault);

@@ -150,4 +150,13 @@ class RequirementCampaignTest {
         ResultsFolders.assertSameCampaign(reference(), copy);
         assertTrue(Files.readString(copy.resolve("campaign.properties")).contains("requirements=car,timeout\n"));
     }
+
+    @Test
+    void aFolderThatKeepsOnlyCampaignCsvHasItsIntervalsAndPairedTestsWrittenAgainFromItsTrials() throws IOException {
+        Path kept = dir.resolve("kept");
+        ResultsFolders.copyCampaignTrials(reference(), kept);
+        CliRunner r = CliRunner.run("report", kept.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        ResultsFolders.assertSameCampaignFiles(reference(), kept);
+    }
 }

@@ -100,6 +100,28 @@ final class ResultsFolders {
         }
     }
 
+    /**
+     * A copy of a campaign's folder as a published one keeps it: campaign.csv and what names the campaign
+     * (campaign.properties, grid.txt), none of its other files or sub-folders.
+     */
+    static void copyCampaignTrials(Path from, Path to) throws IOException {
+        Files.createDirectories(to);
+        for (String f : List.of(ResultsFolder.CAMPAIGN_TRIALS, ResultsFolder.CAMPAIGN_MANIFEST, "grid.txt")) {
+            Files.copy(from.resolve(f), to.resolve(f));
+        }
+    }
+
+    /** Asserts that {@code actual} holds each of the campaign's own files (not its sub-folders') byte for byte. */
+    static void assertSameCampaignFiles(Path expected, Path actual) throws IOException {
+        List<String> own = campaignFiles(expected).stream().filter(f -> !f.contains("/")).toList();
+        assertTrue(own.contains(ResultsFolder.VERDICT) && own.contains(ResultsFolder.CAMPAIGN_STATS), "a campaign's own files: " + own);
+        assertEquals(own, campaignFiles(actual), "the result files of " + actual);
+        for (String f : own) {
+            assertArrayEquals(Files.readAllBytes(expected.resolve(f)), Files.readAllBytes(actual.resolve(f)),
+                    f + " differs between " + expected + " and " + actual);
+        }
+    }
+
     /** The rows of a CSV file without quoted fields, by column name. */
     static List<Map<String, String>> csvRows(Path csv) throws IOException {
         List<String> lines = Files.readAllLines(csv);

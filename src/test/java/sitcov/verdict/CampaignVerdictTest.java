@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
@@ -13,16 +12,9 @@ import sitcov.analysis.CampaignTrial;
 import sitcov.coverage.GridDefinition;
 import sitcov.experiment.CampaignConfig;
 import sitcov.experiment.CampaignTarget;
-import sitcov.experiment.MapId;
-import sitcov.experiment.MapRun;
 import sitcov.experiment.StopReason;
 import sitcov.faults.Fault;
-import sitcov.judge.Detection;
-import sitcov.judge.FaultOutcome;
 import sitcov.judge.FaultyRuns;
-import sitcov.judge.RunSummary;
-import sitcov.oracle.AccidentType;
-import sitcov.oracle.Outcome;
 
 class CampaignVerdictTest {
     private static final sitcov.judge.Variant F = new sitcov.judge.Variant.Seeded(Fault.ofId(2));
@@ -33,11 +25,8 @@ class CampaignVerdictTest {
             return new CampaignTrial(TARGET, driver, t, 7, "replication-" + t, false, 100, 100, 3, StopReason.TICKS,
                     Optional.empty(), Optional.empty());
         }
-        RunSummary run = new RunSummary(Outcome.STOPPED_AT_VERDICT, ticks, Collections.nCopies(AccidentType.values().length, 0L));
-        MapRun map = new MapRun(t, driver, 0, 0, new MapId.Seeded(t), t, t, t, List.of(), run, List.of(new FaultOutcome(F, run,
-                true, true, 1, Detection.FOUND, Optional.of(sitcov.oracle.Failure.TIMEOUT), true)));
         return new CampaignTrial(TARGET, driver, t, 7, "replication-" + t, true, ticks, ticks, 1, StopReason.FALSIFIED,
-                Optional.of(map), Optional.of(sitcov.oracle.Failure.TIMEOUT));
+                Optional.of(new CampaignTrial.FoundMap(0, "seed:" + t, t, t, t)), Optional.of(sitcov.oracle.Failure.TIMEOUT));
     }
 
     private static List<String> verdict(List<CampaignTrial> trials, int n) {

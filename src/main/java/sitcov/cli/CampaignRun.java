@@ -131,7 +131,7 @@ final class CampaignRun {
         }
         VerdictPrinter.print(out, folder);
         out.println("Results in " + folder + " (" + Math.round((System.nanoTime() - start) / 1e9) + " s on " + threads
-                + " threads)");
+                + (threads == 1 ? " thread)" : " threads)"));
         if (manifest.shard().isWhole()) {
             out.println("The report: " + folder.resolve(ResultsFolder.CAMPAIGN_PAGE)
                     + " (the verdict, the tables and the survival curves on one page; open it in a browser)");

@@ -265,7 +265,7 @@ final class RunCommand implements Command {
         }
         SummaryTable.print(out, config, recorder.summary());
         VerdictPrinter.print(out, folder);
-        out.println("Results in " + folder + " (" + progress.elapsed() + " on " + threads + " threads)");
+        out.println("Results in " + folder + " (" + progress.elapsed() + " on " + threads + (threads == 1 ? " thread)" : " threads)"));
         Path report = folder.resolve(ResultsFolder.REPORT);
         if (Files.isRegularFile(report)) {
             out.println("The report: " + report + " (the verdict, every table and figure on one page; open it in a browser)");

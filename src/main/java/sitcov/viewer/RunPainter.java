@@ -4,12 +4,14 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.Font;
+import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.Shape;
 import java.awt.geom.AffineTransform;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Path2D;
+import java.awt.geom.RoundRectangle2D;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.Locale;
@@ -322,7 +324,21 @@ public final class RunPainter {
             double py = HEADER + a.y() * scale;
             g.setColor(ACCIDENT);
             g.draw(new Ellipse2D.Double(px - 9, py - 9, 18, 18));
-            g.drawString(a.type().name() + " t=" + a.tick(), (float) px + 11, (float) py - 6);
+            tag(g, a.type().name() + " t=" + a.tick(), px + 11, py - 6);
         }
+    }
+
+    /** Text on a white tag edged in the accident's red, so it reads on grass, asphalt and cars alike. */
+    private static void tag(Graphics2D g, String text, double x, double baseline) {
+        FontMetrics fm = g.getFontMetrics();
+        RoundRectangle2D box = new RoundRectangle2D.Double(x - 3, baseline - fm.getAscent() - 1,
+                fm.stringWidth(text) + 6, fm.getAscent() + fm.getDescent() + 2, 5, 5);
+        g.setColor(Color.WHITE);
+        g.fill(box);
+        g.setColor(ACCIDENT);
+        g.setStroke(new BasicStroke(1.2f));
+        g.draw(box);
+        g.drawString(text, (float) x, (float) baseline);
+        g.setStroke(new BasicStroke(2.5f));
     }
 }

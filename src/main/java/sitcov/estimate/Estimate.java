@@ -9,7 +9,7 @@ package sitcov.estimate;
  *                   errors for importance sampling, before the interval is cut at 0)
  * @param ess        effective sample size, (Σw)² / Σw² (the runs themselves for plain Monte Carlo)
  */
-public record Estimate(String method, Requirement requirement, int runs, long ticks, int failing, double rate,
+public record Estimate(String method, Failing requirement, int runs, long ticks, int failing, double rate,
                        double low, double high, double halfWidth, double ess) {
     /** The half-width relative to the rate; infinite when no run failed. */
     public double relativeHalfWidth() {

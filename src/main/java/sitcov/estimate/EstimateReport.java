@@ -24,7 +24,7 @@ public final class EstimateReport {
         // the cross-entropy stages' runs are paid for and each stage's mean is unbiased: they count in the estimate
         List<Sample> is = samples.stream().filter(s -> s.stage().equals("is") || s.stage().startsWith("ce-")).toList();
         boolean drawn = samples.stream().anyMatch(s -> s.stage().equals("is"));
-        for (Requirement r : Requirement.all()) {
+        for (Failing r : Failing.all()) {
             if (!mc.isEmpty()) {
                 estimates.add(Estimators.monteCarlo(mc, r));
             }
@@ -90,7 +90,7 @@ public final class EstimateReport {
         t.add("");
         t.add(String.format(Locale.ROOT, "%-20s %-38s %-38s %s", "requirement", "plain Monte Carlo [95% CI] (failing)",
                 "importance sampling [95% CI] (failing)", mcAny != null && isAny != null ? "agree" : ""));
-        for (Requirement r : Requirement.all()) {
+        for (Failing r : Failing.all()) {
             Estimate mc = of("mc", r.column());
             Estimate is = of("is", r.column());
             t.add(String.format(Locale.ROOT, "%-20s %-38s %-38s %s", r.column(), shown(mc), shown(is),

@@ -14,7 +14,7 @@ public final class Estimators {
     }
 
     /** Plain Monte Carlo: the share of runs that failed, with Wilson's interval. */
-    public static Estimate monteCarlo(List<Sample> samples, Requirement requirement) {
+    public static Estimate monteCarlo(List<Sample> samples, Failing requirement) {
         int failing = (int) samples.stream().filter(s -> s.failed(requirement)).count();
         int n = samples.size();
         ConfidenceInterval ci = n == 0 ? new ConfidenceInterval(0, 0, 1) : Wilson.intervalForZ(failing, n, Z95);
@@ -29,7 +29,7 @@ public final class Estimators {
      * began, so each stage's mean is an unbiased estimate and the variance is summed over them
      * (strata), each from its runs' sample variance; the interval is normal, cut at 0.
      */
-    public static Estimate importanceSampling(List<Sample> samples, Requirement requirement) {
+    public static Estimate importanceSampling(List<Sample> samples, Failing requirement) {
         Map<String, double[]> strata = new TreeMap<>(); // replication and stage -> {n, Σx, Σx²}
         double sumW = 0;
         double sumW2 = 0;

@@ -37,7 +37,7 @@ public record Sample(int replication, String stage, int index, long seed, DrawTr
         return trace.weight();
     }
 
-    public boolean failed(Requirement requirement) {
-        return requirement.failedIn(failures);
+    public boolean failed(Failing requirement) {
+        return requirement.in(failures);
     }
 }

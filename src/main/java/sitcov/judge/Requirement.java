@@ -63,6 +63,11 @@ public enum Requirement {
         return Failure.of(run.outcome());
     }
 
+    /** Whether a run that had {@code failures} violated it. */
+    public boolean violatedBy(Set<Failure> failures) {
+        return accident != null ? failures.contains(Failure.of(accident)) : failures.stream().anyMatch(Failure::ofController);
+    }
+
     /**
      * The requirements a campaign falsifies unless its preset names them: all of them, but for the builtin car
      * ({@code controllerCanFail} false) the controller's own: it runs in sitcov's process with no time limit.

@@ -8,7 +8,7 @@ import org.junit.jupiter.api.Test;
 
 class EstimateReportTest {
     private static Estimate estimate(String method, int runs, long ticks, double rate, double halfWidth) {
-        return new Estimate(method, new Requirement.Any(), runs, ticks, 1, rate, rate - halfWidth, rate + halfWidth,
+        return new Estimate(method, new Failing.Any(), runs, ticks, 1, rate, rate - halfWidth, rate + halfWidth,
                 halfWidth, runs);
     }
 

@@ -32,7 +32,7 @@ class EstimatorsTest {
         for (int i = 0; i < 40; i++) {
             runs.add(sample(0, 0, 0, i < 4));
         }
-        Estimate e = Estimators.monteCarlo(runs, new Requirement.Any());
+        Estimate e = Estimators.monteCarlo(runs, new Failing.Any());
         assertEquals(0.1, e.rate(), 1e-15);
         double z = 1.959963984540054;
         double n = 40;
@@ -50,7 +50,7 @@ class EstimatorsTest {
         for (int i = 0; i < 50; i++) {
             runs.add(sample(0, -2, -2, i % 5 == 0));
         }
-        Estimate e = Estimators.importanceSampling(runs, new Requirement.Any());
+        Estimate e = Estimators.importanceSampling(runs, new Failing.Any());
         assertEquals(0.2, e.rate(), 1e-12);
         assertEquals(50, e.ess(), 1e-9);
         double sd = Math.sqrt(0.2 * 0.8 * 50 / 49);
@@ -68,7 +68,7 @@ class EstimatorsTest {
             boolean failed = random.nextDouble() < q;
             runs.add(failed ? sample(0, Math.log(p), Math.log(q), true) : sample(0, Math.log(1 - p), Math.log(1 - q), false));
         }
-        Estimate e = Estimators.importanceSampling(runs, new Requirement.Any());
+        Estimate e = Estimators.importanceSampling(runs, new Failing.Any());
         assertTrue(e.low() <= p && p <= e.high(), e.toString());
         // plain Monte Carlo would need about (1 - p) / p / (relative half-width / 1.96)^2 runs for the same precision
         assertTrue(e.relativeHalfWidth() < 0.1, e.toString());
@@ -81,7 +81,7 @@ class EstimatorsTest {
             runs.add(sample(0, 0, 0, i < 5));
             runs.add(sample(1, 0, 0, false));
         }
-        Estimate e = Estimators.importanceSampling(runs, new Requirement.Any());
+        Estimate e = Estimators.importanceSampling(runs, new Failing.Any());
         assertEquals(0.25, e.rate(), 1e-12);
         // stratum 0: its runs vary by 0.5·0.5·10/9, its mean by a tenth of that; stratum 1 not at all; each weighs (10/20)²
         double variance = (0.5 * 0.5) * (0.25 * 10 / 9) / 10;
@@ -97,7 +97,7 @@ class EstimatorsTest {
             runs.add(sample(0, "ce-1", 0, 0, i < 1));
             runs.add(sample(0, "is", 0, Math.log(4), i < 4));
         }
-        Estimate e = Estimators.importanceSampling(runs, new Requirement.Any());
+        Estimate e = Estimators.importanceSampling(runs, new Failing.Any());
         // the pooled mean of w·1{failed}: (1 + 4 / 4) / 20
         assertEquals(0.1, e.rate(), 1e-12);
         // ce-1: mean 0.1, sample variance (1 - 10·0.01) / 9 = 0.1; is: mean 0.1, sample variance 4·(1/16 - 0.01·10/4) / 9
@@ -110,7 +110,7 @@ class EstimatorsTest {
     @Test
     void eachRequirementCountsOnlyItsOwnFailures() {
         List<Sample> runs = List.of(sample(0, 0, 0, true), sample(0, 0, 0, false));
-        assertEquals(0.5, Estimators.monteCarlo(runs, new Requirement.Of(Failure.TIMEOUT)).rate());
-        assertEquals(0.0, Estimators.monteCarlo(runs, new Requirement.Of(Failure.LEAVEROAD)).rate());
+        assertEquals(0.5, Estimators.monteCarlo(runs, new Failing.Of(sitcov.judge.Requirement.TIMEOUT)).rate());
+        assertEquals(0.0, Estimators.monteCarlo(runs, new Failing.Of(sitcov.judge.Requirement.LEAVEROAD)).rate());
     }
 }

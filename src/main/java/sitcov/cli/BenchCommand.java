@@ -1,6 +1,5 @@
 package sitcov.cli;
 
-import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -17,9 +16,6 @@ import sitcov.judge.MapRunner;
 import sitcov.judge.RunObserver;
 import sitcov.judge.Simulator;
 import sitcov.oracle.RunResult;
-import sitcov.protocol.BatchingProxy;
-import sitcov.protocol.ControllerStartException;
-import sitcov.protocol.ExecControllers;
 import sitcov.world.Layout;
 import sitcov.world.MapGenerator;
 import sitcov.world.WorldMap;
@@ -100,7 +96,20 @@ final class BenchCommand implements Command {
         int maps = options.count("--maps", 1, MAX_MAPS).orElse(DEFAULT_MAPS);
         int candidates = options.count("--candidates", 1, MAX_CANDIDATES).orElse(DEFAULT_CANDIDATES);
         int judged = options.count("--judged", 1, MAX_JUDGED).orElse(DEFAULT_JUDGED);
+        print(out, measure(maps, candidates, judged, err));
+        return ExitCode.OK;
+    }
 
+    /** What {@link #measure} timed: runs of maps 1..maps, candidate maps, and judged maps three ways. */
+    private record Figures(int maps, int candidates, int judged, int warmRuns, int warmCandidates, long movingCars,
+                           long ticks, long runNanos, long layoutNanos, double untilVerdict, double toEnd, Forking forking) {
+    }
+
+    /** Seconds and ticks a judged map with all twenty faults, forked and whole (medians of the alternated rounds). */
+    private record Forking(double forkedSeconds, double wholeSeconds, long forkedTicks, long wholeTicks) {
+    }
+
+    private static Figures measure(int maps, int candidates, int judged, PrintStream err) {
         // the JIT needs a few hundred runs before the tick settles: fewer measure the compiler, not the car
         int warmRuns = Math.min(2 * maps, 400);
         int warmCandidates = Math.min(candidates, 5_000);
@@ -138,6 +147,12 @@ final class BenchCommand implements Command {
         double untilVerdict = judgeSeconds(judgedMaps, FaultyRuns.UNTIL_VERDICT) / judged;
         double toEnd = judgeSeconds(judgedMaps, FaultyRuns.TO_END) / judged;
         err.println("bench: judging maps 1.." + judged + " with all twenty faults, forked and run whole ...");
+        return new Figures(maps, candidates, judged, warmRuns, warmCandidates, movingCars, ticks, runNanos, layoutNanos,
+                untilVerdict, toEnd, forking(judgedMaps));
+    }
+
+    private static Forking forking(List<WorldMap> judgedMaps) {
+        int judged = judgedMaps.size();
         List<Fault> all = List.of(Fault.values());
         ControllerFactory whole = BuiltinCar.FACTORY.unforked();
         // both warmed on a map, then alternated round by round (the first of a pair runs on a colder cache)
@@ -163,48 +178,49 @@ final class BenchCommand implements Command {
                 forkedRounds[r] = (System.nanoTime() - between) / 1e9 / judged;
             }
         }
-        double forkedSeconds = median(forkedRounds);
-        double wholeSeconds = median(wholeRounds);
+        return new Forking(median(forkedRounds), median(wholeRounds), forkedTicks, wholeTicks);
+    }
 
-        double runSeconds = runNanos / 1e9;
-        double layoutSeconds = layoutNanos / 1e9;
-        double microsPerTick = runNanos / 1e3 / ticks;
-        double per20000 = layoutSeconds * DEFAULT_CANDIDATES / candidates;
+    private static void print(PrintStream out, Figures f) {
+        double runSeconds = f.runNanos() / 1e9;
+        double layoutSeconds = f.layoutNanos() / 1e9;
+        double microsPerTick = f.runNanos() / 1e3 / f.ticks();
+        double per20000 = layoutSeconds * DEFAULT_CANDIDATES / f.candidates();
+        Forking k = f.forking();
         out.printf(Locale.ROOT, "sitcov bench: one thread, after a warm-up of %d runs and %d candidate maps%n%n",
-                warmRuns, warmCandidates);
+                f.warmRuns(), f.warmCandidates());
         out.printf(Locale.ROOT, "  %-36s %12s   %s%n", "measure", "figure", "target");
-        line(out, "simulated ticks per second", String.format(Locale.ROOT, "%.0f", ticks / runSeconds),
+        line(out, "simulated ticks per second", String.format(Locale.ROOT, "%.0f", f.ticks() / runSeconds),
                 ">= 125000 (follows from the tick time)");
         line(out, "microseconds per tick", String.format(Locale.ROOT, "%.2f", microsPerTick),
                 "<= 8 with 15 moving cars " + verdict(microsPerTick <= 8));
-        line(out, "mean moving cars per map", String.format(Locale.ROOT, "%.1f", (double) movingCars / maps),
+        line(out, "mean moving cars per map", String.format(Locale.ROOT, "%.1f", (double) f.movingCars() / f.maps()),
                 "15 (a typical map)");
-        line(out, "runs per second", String.format(Locale.ROOT, "%.2f", maps / runSeconds), "");
-        line(out, "mean ticks per run", String.format(Locale.ROOT, "%.1f", (double) ticks / maps), "");
-        line(out, "candidate maps per second", String.format(Locale.ROOT, "%.0f", candidates / layoutSeconds),
+        line(out, "runs per second", String.format(Locale.ROOT, "%.2f", f.maps() / runSeconds), "");
+        line(out, "mean ticks per run", String.format(Locale.ROOT, "%.1f", (double) f.ticks() / f.maps()), "");
+        line(out, "candidate maps per second", String.format(Locale.ROOT, "%.0f", f.candidates() / layoutSeconds),
                 "> 10000 (follows from the next line)");
         line(out, "seconds for 20000 candidates", String.format(Locale.ROOT, "%.3f", per20000),
-                "< 2 " + verdict(per20000 < 2) + (candidates == DEFAULT_CANDIDATES ? ""
-                        : " (extrapolated from " + candidates + ")"));
-        line(out, "seconds a judged map, until verdict", String.format(Locale.ROOT, "%.4f", untilVerdict),
+                "< 2 " + verdict(per20000 < 2) + (f.candidates() == DEFAULT_CANDIDATES ? ""
+                        : " (extrapolated from " + f.candidates() + ")"));
+        line(out, "seconds a judged map, until verdict", String.format(Locale.ROOT, "%.4f", f.untilVerdict()),
                 "fault-free run + 7 PAPER faulty runs (faulty_runs=until-verdict)");
-        line(out, "seconds a judged map, to the end", String.format(Locale.ROOT, "%.4f", toEnd),
+        line(out, "seconds a judged map, to the end", String.format(Locale.ROOT, "%.4f", f.toEnd()),
                 "the same, faulty runs driven to the Target or the timeout");
-        line(out, "seconds a judged map, ALL, forked", String.format(Locale.ROOT, "%.4f", forkedSeconds),
+        line(out, "seconds a judged map, ALL, forked", String.format(Locale.ROOT, "%.4f", k.forkedSeconds()),
                 "fault-free run + all twenty faulty runs (until verdict), each from where its fault departs");
-        line(out, "seconds a judged map, ALL, whole", String.format(Locale.ROOT, "%.4f", wholeSeconds),
+        line(out, "seconds a judged map, ALL, whole", String.format(Locale.ROOT, "%.4f", k.wholeSeconds()),
                 String.format(Locale.ROOT, "the same, every faulty run from tick 0 (--fork off): forked / whole %.3f",
-                        forkedSeconds / wholeSeconds));
-        line(out, "ticks a judged map, ALL, forked", String.format(Locale.ROOT, "%.0f", (double) forkedTicks / judged),
-                String.format(Locale.ROOT, "against %.0f run whole: %.3f of them", (double) wholeTicks / judged,
-                        (double) forkedTicks / wholeTicks));
+                        k.forkedSeconds() / k.wholeSeconds()));
+        line(out, "ticks a judged map, ALL, forked", String.format(Locale.ROOT, "%.0f", (double) k.forkedTicks() / f.judged()),
+                String.format(Locale.ROOT, "against %.0f run whole: %.3f of them", (double) k.wholeTicks() / f.judged(),
+                        (double) k.forkedTicks() / k.wholeTicks()));
         out.println();
         out.printf(Locale.ROOT, "Runs: maps 1..%d, internal seed = external seed, no faults, %d ticks in %.2f s."
-                + " Candidates: MapGenerator.layout of seeds 1..%d in %.3f s.%n", maps, ticks, runSeconds,
-                candidates, layoutSeconds);
+                + " Candidates: MapGenerator.layout of seeds 1..%d in %.3f s.%n", f.maps(), f.ticks(), runSeconds,
+                f.candidates(), layoutSeconds);
         out.printf(Locale.ROOT, "Judged maps: 1..%d, each run fault-free and once per PAPER fault, as an experiment does.%n",
-                judged);
-        return ExitCode.OK;
+                f.judged());
     }
 
     private static double judgeSeconds(List<WorldMap> maps, FaultyRuns length) {

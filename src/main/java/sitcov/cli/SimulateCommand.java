@@ -21,9 +21,6 @@ import sitcov.judge.RunRecord;
 import sitcov.judge.Simulator;
 import sitcov.oracle.Accident;
 import sitcov.oracle.AccidentType;
-import sitcov.oracle.Margins;
-import sitcov.oracle.NearMiss;
-import sitcov.oracle.NearMisses;
 import sitcov.oracle.RunResult;
 import sitcov.protocol.BatchingProxy;
 import sitcov.protocol.ControllerChoice;
@@ -31,7 +28,6 @@ import sitcov.protocol.ControllerStartException;
 import sitcov.protocol.ExecControllers;
 import sitcov.recording.Recording;
 import sitcov.recording.RecordingFile;
-import sitcov.render.NearMissText;
 import sitcov.render.NearMissWatch;
 import sitcov.render.RunGallery;
 import sitcov.render.RunRenderer;
@@ -39,7 +35,6 @@ import sitcov.render.TraceWriter;
 import sitcov.render.TrajectoryRecorder;
 import sitcov.results.IoReason;
 import sitcov.world.MapGenerator;
-import sitcov.world.SituationFile;
 import sitcov.world.WorldMap;
 
 /**
@@ -234,20 +229,7 @@ final class SimulateCommand implements Command {
                     + " after " + result.ticks() + ": the map or the world changed since it was recorded.");
             return ExitCode.FAILURE;
         }
-        if (result.clampedTicks() > 0) {
-            out.println("  clamped: the world clamped the command of " + result.clampedTicks() + " tick"
-                    + (result.clampedTicks() == 1 ? "" : "s") + " to the car's limits, the first at " + firstClamp[0]);
-        }
-        for (Activation a : activations) {
-            if (a.active()) {
-                out.println("  fault " + a.fault().id() + " (" + a.fault().label() + "): "
-                        + (a.effective() ? "effective " + a.effectiveCount() + " times, first at tick " + a.firstEffectiveTick()
-                        : a.reached() ? "reached, never effective" : "not reached"));
-            }
-        }
-        if (nearMisses.started()) {
-            printNearMisses(nearMisses.nearMisses(), out);
-        }
+        RunDetails.print(out, result, firstClamp[0], activations, nearMisses);
         trace.ifPresent(t -> out.println("Trace written to " + t + " (" + result.ticks() + " ticks, one row each)"));
         if (png.isPresent()) {
             try {
@@ -355,29 +337,6 @@ final class SimulateCommand implements Command {
             s.append("; clamped ticks: ").append(r.clampedTicks());
         }
         return s.toString();
-    }
-
-    /**
-     * Each measure's least value and the tick it was first reached, and ρ per accident type, with
-     * their units, as results keep them (4 decimals); beside the accidents, never counted as failures.
-     */
-    static void printNearMisses(NearMisses watched, PrintStream out) {
-        out.println("Near misses (the closest the run came; reported beside accidents, never counted as one):");
-        for (NearMiss m : NearMiss.values()) {
-            double v = watched.least(m);
-            out.println(String.format(Locale.ROOT, "  %-27s %s", NearMissText.name(m),
-                    NearMissText.value(m, v, Margins.DECIMALS) + (Double.isFinite(v) ? " at tick " + watched.tickOf(m) : "")));
-        }
-        out.println("Robustness ρ per accident type (below 0: that accident happened; the least over the run):");
-        for (AccidentType t : AccidentType.values()) {
-            out.println(String.format(Locale.ROOT, "  %-27s %s", t.name(),
-                    NearMissText.rho(t, Margins.kept(watched.robustness(t)), Margins.DECIMALS)
-                            + (t == AccidentType.TIMEOUT ? timeoutNote(watched.robustness(t)) : "")));
-        }
-    }
-
-    private static String timeoutNote(double rho) {
-        return Double.isNaN(rho) ? " (the run ended otherwise)" : rho == 0 ? " (timed out)" : " to spare before the timeout";
     }
 
     private static String describe(Accident a) {

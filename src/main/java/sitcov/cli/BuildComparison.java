@@ -141,7 +141,7 @@ final class BuildComparison {
                 }
             } catch (MalformedURLException | ReflectiveOperationException | ClassCastException e) {
                 throw new UsageException("bench: --vs " + name + " is not a sitcov build this bench can drive (a folder of"
-                        + " classes such as target/classes, or a jar, of any session's build): " + e);
+                        + " classes such as target/classes, or a jar, of any sitcov build): " + e);
             }
         }
 

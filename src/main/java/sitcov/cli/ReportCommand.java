@@ -57,6 +57,11 @@ final class ReportCommand implements Command {
                 if (manifest.complete() && CampaignFinisher.keepsOnlyTrials(folder, manifest.config())) {
                     out.println("report: " + folder + " keeps campaign.csv but not its sub-folders; every other file is"
                             + " computed again from the trials campaign.csv holds.");
+                    if (manifest.trialsSha256().isEmpty()) {
+                        err.println("sitcov: report: warning: " + folder.resolve(ResultsFolder.CAMPAIGN_TRIALS) + " was written before sitcov kept its digest, so a"
+                                + " hand edit to it cannot be detected; for a campaign that is checked, "
+                                + Manifest.again(folder) + ".");
+                    }
                 }
                 CampaignFinisher.report(folder);
             } else {

@@ -43,8 +43,11 @@ public final class CampaignFinisher {
      */
     public static void finish(Path folder, CampaignManifest manifest) throws IOException {
         if (manifest.shard().isWhole()) {
+            // trials read back from a campaign.csv whose digest was never kept are written again as they were, unattested
+            boolean attest = !keepsOnlyTrials(folder, manifest.config()) || manifest.trialsSha256().isPresent();
             CampaignAnalysis a = analyse(folder, manifest);
-            OutputFile.writeLines(folder.resolve(CampaignCsv.TRIALS), CampaignCsv.trials(a));
+            List<String> trials = CampaignCsv.trials(a);
+            OutputFile.writeLines(folder.resolve(CampaignCsv.TRIALS), trials);
             OutputFile.writeLines(folder.resolve(CampaignCsv.DRIVERS), CampaignCsv.drivers(a));
             OutputFile.writeLines(folder.resolve(CampaignCsv.STATS), CampaignCsv.stats(a));
             List<String> verdict = a.config().onRequirements() ? RequirementVerdict.lines(a) : CampaignVerdict.lines(a);
@@ -52,6 +55,8 @@ public final class CampaignFinisher {
             CampaignFigure.write(a, folder);
             OutputFile.writeString(folder.resolve(PAGE), a.config().onRequirements() ? RequirementPage.html(a, verdict)
                     : CampaignPage.html(a, verdict));
+            (attest ? manifest.completeWith(trials) : manifest.complete(true)).write(folder);
+            return;
         }
         manifest.complete(true).write(folder);
     }
@@ -86,7 +91,10 @@ public final class CampaignFinisher {
     public static CampaignAnalysis analyse(Path folder, CampaignManifest manifest) throws IOException {
         CampaignConfig c = manifest.config();
         if (keepsOnlyTrials(folder, c)) {
-            return CampaignAnalysis.of(c, CampaignCsv.readTrials(c, folder.resolve(CampaignCsv.TRIALS)));
+            Path file = folder.resolve(CampaignCsv.TRIALS);
+            List<String> lines = Files.readAllLines(file);
+            manifest.verifyTrials(folder, lines);
+            return CampaignAnalysis.of(c, CampaignCsv.readTrials(c, file, lines));
         }
         List<CampaignTrial> trials = new ArrayList<>();
         for (CampaignTarget f : c.targets()) {

@@ -1,7 +1,5 @@
 package sitcov.results;
 
-import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -52,13 +50,12 @@ public final class CampaignCsv {
     }
 
     /**
-     * The trials of campaign {@code c} as {@link #trials} wrote them into {@code file}, so that a folder that keeps
+     * The trials of campaign {@code c} as {@link #trials} wrote them, the {@code lines} of {@code file}, so that a folder that keeps
      * only campaign.csv of its sub-folders can still have its other tables computed again.
      *
      * @throws IllegalArgumentException when the file is not such a campaign.csv of {@code c}
      */
-    public static List<CampaignTrial> readTrials(CampaignConfig c, Path file) throws IOException {
-        List<String> lines = Files.readAllLines(file);
+    public static List<CampaignTrial> readTrials(CampaignConfig c, Path file, List<String> lines) {
         if (lines.isEmpty() || !lines.get(0).equals(trialsHeader(c))) {
             throw new IllegalArgumentException(file + " is not the campaign.csv of this campaign (its header differs);"
                     + " put back the file the campaign wrote");

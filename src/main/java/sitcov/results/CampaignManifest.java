@@ -35,9 +35,14 @@ import sitcov.judge.VariantList;
  * <p>Its {@code checks} line guards it as a manifest's does ({@link ManifestChecks}): a target dropped from
  * it by hand would otherwise pass, since the sub-folders left are each checked only against it.
  * {@code checked} is false for a folder written before campaigns were checked: it is read, and
- * written again, without them.
+ * written again, without them. A complete whole campaign's manifest also holds {@code trials_sha256}, the digest of
+ * the campaign.csv written with it, so a folder that keeps only campaign.csv is reported from the trials sitcov
+ * wrote ({@link #verifyTrials}).
  */
-public record CampaignManifest(CampaignConfig config, String version, Shard shard, boolean complete, boolean checked) {
+public record CampaignManifest(CampaignConfig config, String version, Shard shard, boolean complete, boolean checked,
+                               Optional<String> trialsSha256) {
+    static final String TRIALS_SHA256 = "trials_sha256";
+
     public static final String FILE = ResultsFolder.CAMPAIGN_MANIFEST;
     private static final String HEADER = "# sitcov campaign manifest";
     /** The sub-folders a campaign writes: one a target ({@link CampaignTarget#folder}). */
@@ -45,12 +50,12 @@ public record CampaignManifest(CampaignConfig config, String version, Shard shar
 
     /** The manifest of a whole campaign, with checks, as every campaign is written now. */
     public CampaignManifest(CampaignConfig config, String version, boolean complete) {
-        this(config, version, Shard.WHOLE, complete, true);
+        this(config, version, Shard.WHOLE, complete, true, Optional.empty());
     }
 
     /** The manifest of one shard of a campaign, with checks. */
     public CampaignManifest(CampaignConfig config, String version, Shard shard, boolean complete) {
-        this(config, version, shard, complete, true);
+        this(config, version, shard, complete, true, Optional.empty());
     }
 
     /** Whether {@code other} is a folder of the same campaign, whatever shard each holds and whether it is complete. */
@@ -60,7 +65,7 @@ public record CampaignManifest(CampaignConfig config, String version, Shard shar
 
     /** The same campaign, whole and checked: what merging its shards makes. */
     public CampaignManifest whole() {
-        return new CampaignManifest(config, version, Shard.WHOLE, complete, true);
+        return new CampaignManifest(config, version, Shard.WHOLE, complete, true, trialsSha256);
     }
 
     /** Whether {@code folder} holds a campaign (rather than one experiment). */
@@ -68,8 +73,32 @@ public record CampaignManifest(CampaignConfig config, String version, Shard shar
         return Files.isRegularFile(folder.resolve(FILE));
     }
 
+    /** Marked complete or not; a campaign not complete has no trials to digest. */
     public CampaignManifest complete(boolean done) {
-        return new CampaignManifest(config, version, shard, done, checked);
+        return new CampaignManifest(config, version, shard, done, checked, done ? trialsSha256 : Optional.empty());
+    }
+
+    /** Complete, with the digest of the campaign.csv just written beside it. */
+    public CampaignManifest completeWith(List<String> trials) {
+        return new CampaignManifest(config, version, shard, true, checked, Optional.of(Manifest.sha256(String.join("\n", trials))));
+    }
+
+    /**
+     * Checks that campaign.csv's {@code trials} are the ones this manifest was written with.
+     *
+     * @return false where the manifest, written before it held the digest, cannot tell
+     * @throws IllegalArgumentException when campaign.csv was changed after sitcov wrote it
+     */
+    public boolean verifyTrials(Path folder, List<String> trials) {
+        if (trialsSha256.isEmpty()) {
+            return false;
+        }
+        if (!trialsSha256.get().equals(Manifest.sha256(String.join("\n", trials)))) {
+            throw new IllegalArgumentException(folder.resolve(ResultsFolder.CAMPAIGN_TRIALS) + " was changed after sitcov"
+                    + " wrote it (it does not match " + TRIALS_SHA256 + " in " + FILE + "); put back the file the campaign"
+                    + " wrote, or run the campaign again into a new folder: " + Manifest.again(folder));
+        }
+        return true;
     }
 
     List<String> lines() {
@@ -96,6 +125,7 @@ public record CampaignManifest(CampaignConfig config, String version, Shard shar
         m.put("controller", c.controller());
         m.put("grid", ResultsFolder.GRID);
         m.put("grid_sha256", Manifest.sha256(c.grid().format()));
+        trialsSha256.ifPresent(t -> m.put(TRIALS_SHA256, t));
         return ManifestChecks.lines(HEADER, m, checked, complete);
     }
 
@@ -153,7 +183,7 @@ public record CampaignManifest(CampaignConfig config, String version, Shard shar
                     + " campaign wrote: the file was changed after sitcov wrote it; " + fix);
         });
         return new CampaignManifest(c, required(p, "sitcov_version"), shard, Boolean.parseBoolean(required(p, "complete")),
-                p.containsKey(ManifestChecks.CHECKS));
+                p.containsKey(ManifestChecks.CHECKS), Optional.ofNullable(p.getProperty(TRIALS_SHA256)).map(String::strip));
     }
 
     /** A sub-folder of the campaign's kind that none of its targets names: what a target dropped by hand leaves. */

@@ -151,22 +151,46 @@ class CampaignRunTest {
     }
 
     @Test
-    void aCampaignCsvChangedByHandIsRefusedNamingItsRowAndNothingIsWritten() throws IOException {
+    void aCampaignCsvChangedByHandIsRefusedByItsDigestAndNothingIsWritten() throws IOException {
         Path kept = dir.resolve("kept");
         ResultsFolders.copyCampaignTrials(reference(), kept);
+        assertTrue(Files.readString(kept.resolve("campaign.properties")).contains("trials_sha256="), "a digest kept");
+        Path trials = kept.resolve("campaign.csv");
+        // a plausible edit: one more tick to a trial's failure, which no row's form betrays
+        List<String> lines = new java.util.ArrayList<>(Files.readAllLines(trials));
+        String[] cells = lines.get(3).split(",", -1);
+        cells[6] = Long.toString(Long.parseLong(cells[6]) + 1);
+        lines.set(3, String.join(",", cells));
+        Files.write(trials, lines);
+        byte[] before = Files.readAllBytes(trials);
+        CliRunner r = CliRunner.run("report", kept.toString());
+        assertEquals(ExitCode.USAGE, r.exitCode(), r.err());
+        assertTrue(r.err().contains("campaign.csv was changed after sitcov wrote it (it does not match trials_sha256"), r.err());
+        assertFalse(r.err().contains("\tat "), "no stack trace: " + r.err());
+        assertArrayEquals(before, Files.readAllBytes(trials));
+        assertFalse(Files.exists(kept.resolve("verdict.txt")), "no verdict written from a changed campaign.csv");
+    }
+
+    @Test
+    void aCampaignCsvWrittenBeforeItsDigestIsReportedWithAWarningAndAMalformedRowIsRefusedByNumber() throws Exception {
+        CampaignConfig campaign = Preset.read(Path.of(TINY), null, Drivers.standard()).campaign();
+        Path kept = dir.resolve("kept");
+        ResultsFolders.copyCampaignTrials(reference(), kept);
+        new CampaignManifest(campaign, Version.current(), true).write(kept);
+        CliRunner r = CliRunner.run("report", kept.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.err().contains("campaign.csv was written before sitcov kept its digest"), r.err());
+        assertFalse(Files.readString(kept.resolve("campaign.properties")).contains("trials_sha256="),
+                "trials read back unattested are not attested by report");
         Path trials = kept.resolve("campaign.csv");
         List<String> lines = new java.util.ArrayList<>(Files.readAllLines(trials));
         String[] cells = lines.get(3).split(",", -1);
         cells[6] = "many";
         lines.set(3, String.join(",", cells));
         Files.write(trials, lines);
-        byte[] before = Files.readAllBytes(trials);
-        CliRunner r = CliRunner.run("report", kept.toString());
-        assertEquals(ExitCode.USAGE, r.exitCode(), r.err());
-        assertTrue(r.err().contains("campaign.csv, row 4, is not a trial this campaign wrote"), r.err());
-        assertFalse(r.err().contains("\tat "), "no stack trace: " + r.err());
-        assertArrayEquals(before, Files.readAllBytes(trials));
-        assertFalse(Files.exists(kept.resolve("verdict.txt")), "no verdict written from a changed campaign.csv");
+        CliRunner bad = CliRunner.run("report", kept.toString());
+        assertEquals(ExitCode.USAGE, bad.exitCode(), bad.err());
+        assertTrue(bad.err().contains("campaign.csv, row 4, is not a trial this campaign wrote"), bad.err());
     }
 
     /** Starts the campaign's trials of {@code fault} into its sub-folder as run does, stopped as a kill would after {@code maps} maps. */

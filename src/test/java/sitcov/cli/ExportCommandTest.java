@@ -55,7 +55,7 @@ class ExportCommandTest {
     }
 
     private static Path smallRun(String fault) throws IOException {
-        Path work = Files.createTempDirectory("sitcov-export-test");
+        Path work = ResultsFolders.scratch("sitcov-export-test");
         Path preset = work.resolve("small.properties");
         List<String> lines = new ArrayList<>();
         for (String line : Files.readAllLines(Path.of(ResultsFolders.TINY))) {

@@ -33,7 +33,7 @@ class FolderExportTest {
 
     private static synchronized Path folder() throws IOException {
         if (folder == null) {
-            Path work = Files.createTempDirectory("sitcov-folder-export-test");
+            Path work = ResultsFolders.scratch("sitcov-folder-export-test");
             Path preset = work.resolve("one-map.properties");
             List<String> lines = new ArrayList<>();
             for (String line : Files.readAllLines(Path.of(ResultsFolders.TINY))) {

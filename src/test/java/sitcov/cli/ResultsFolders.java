@@ -37,13 +37,22 @@ final class ResultsFolders {
     static synchronized Path ranOnce(String preset) throws IOException {
         Path folder = RAN.get(preset);
         if (folder == null) {
-            folder = Files.createTempDirectory("sitcov-reference").resolve("whole");
+            folder = scratch("sitcov-reference").resolve("whole");
             CliRunner r = CliRunner.run("run", preset, "--out", folder.toString(), "--threads", "2");
             assertEquals(0, r.exitCode(), r.err());
             assertTrue(r.out().contains("Verdict"), "run prints the verdict: " + r.out());
             RAN.put(preset, folder);
         }
         return folder;
+    }
+
+    /**
+     * A new folder for a fixture shared by several tests (a JUnit {@code @TempDir} lives for one test or class): under
+     * the build's target/, so a clean build removes it rather than leaving it in the system's temporary folder.
+     */
+    static Path scratch(String prefix) throws IOException {
+        Path root = Files.createDirectories(Path.of("target", "test-scratch"));
+        return Files.createTempDirectory(root, prefix).toAbsolutePath();
     }
 
     /** The files of a folder that hold results (everything but the timed files), as paths within it, sorted. */

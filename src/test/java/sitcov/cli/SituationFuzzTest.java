@@ -84,7 +84,7 @@ class SituationFuzzTest {
     /** The figures for a note: {@code java -cp target/classes:target/test-classes:JUNIT sitcov.cli.SituationFuzzTest 3000}. */
     public static void main(String[] args) throws IOException {
         int mutants = args.length > 0 ? Integer.parseInt(args[0]) : 3000;
-        Path dir = Files.createTempDirectory("sitcov-fuzz");
+        Path dir = ResultsFolders.scratch("sitcov-fuzz");
         Tally t = fuzz(dir, SEED, mutants, true);
         System.out.println(mutants + " mutants (seed " + SEED + "): " + t.refused() + " refused with exit 2 naming the file, "
                 + t.accepted() + " accepted and valid, " + t.findings().size() + " anything else");

@@ -69,7 +69,7 @@ class ArchitectureTest {
             Map.entry("verdict", union(SIMULATION, "judge", "experiment", "analysis")),
             Map.entry("results", union(SIMULATION, "judge", "experiment", "analysis")),
             // a failure rate estimated: runs of the generator's maps, weighted by their traced draws; stress-search's stress
-            Map.entry("estimate", union(SIMULATION, "judge", "drivers")),
+            Map.entry("estimate", union(SIMULATION, "judge", "drivers", "results")),
             // maps, situations and recorded runs in the ASAM formats: a run of the builtin car is all it needs
             Map.entry("export", union(SIMULATION, "judge")),
             // a results folder's recordings: the commands of its failing runs, replayed without their controller

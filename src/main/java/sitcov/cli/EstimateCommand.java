@@ -106,7 +106,7 @@ final class EstimateCommand implements Command {
                 }
             }
             EstimateReport report = EstimateFolder.write(folder, config, Version.current(), shard.k(), shard.n(),
-                    samples, proposals);
+                    samples, proposals, true);
             report.text().forEach(out::println);
             out.println();
             out.println("Results in " + folder);

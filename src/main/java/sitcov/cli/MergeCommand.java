@@ -91,6 +91,11 @@ final class MergeCommand implements Command {
     private static int mergeEstimates(List<Path> shards, Path target, PrintStream out, PrintStream err) throws UsageException {
         try {
             sitcov.estimate.EstimateFolder.merge(shards, target).text().forEach(out::println);
+            if (!sitcov.estimate.EstimateFolder.attested(target)) {
+                err.println("sitcov: merge: warning: a shard's manifest keeps no digest of its samples (it was written"
+                        + " before sitcov kept one), so a hand edit to them cannot be detected; " + target
+                        + " is left without digests too. For an estimate that is checked, run it again.");
+            }
         } catch (IllegalArgumentException e) {
             throw new UsageException("merge: " + e.getMessage() + ".");
         } catch (IOException e) {

@@ -9,7 +9,9 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.TreeSet;
+import sitcov.results.Manifest;
 
 /**
  * An estimate's results folder: manifest.properties, samples.csv, proposals.csv, estimate.csv and
@@ -35,19 +37,31 @@ public final class EstimateFolder {
         }
     }
 
-    /** Writes the replications run, in replication order, and their estimates; returns the report. */
+    /**
+     * Writes the replications run, in replication order, and their estimates; returns the report. {@code attest}:
+     * the manifest keeps the digests of the samples and proposals (false for rows read from a folder that kept none).
+     */
     public static EstimateReport write(Path folder, EstimateConfig config, String version, int shardK, int shardN,
-                                       List<String> sampleRows, List<String> proposalRows) throws IOException {
+                                       List<String> sampleRows, List<String> proposalRows, boolean attest) throws IOException {
         Files.createDirectories(folder);
-        writeLines(folder.resolve(SAMPLES), withHeader(SampleTable.header(), sampleRows));
-        writeLines(folder.resolve(PROPOSALS), withHeader(ProposalTable.header(), proposalRows));
+        String samplesText = text(withHeader(SampleTable.header(), sampleRows));
+        String proposalsText = text(withHeader(ProposalTable.header(), proposalRows));
+        write(folder.resolve(SAMPLES), samplesText);
+        write(folder.resolve(PROPOSALS), proposalsText);
         List<Sample> samples = sampleRows.stream().map(SampleTable::parse).toList();
         EstimateReport report = new EstimateReport(config, samples);
         writeLines(folder.resolve(ESTIMATES), withHeader(EstimateReport.csvHeader(), report.csvRows()));
         writeLines(folder.resolve(TEXT), report.text());
         // the manifest last: complete=true only once every other file is whole
-        writeLines(folder.resolve(EstimateManifest.FILE), EstimateManifest.lines(config, version, shardK, shardN, true));
+        writeLines(folder.resolve(EstimateManifest.FILE), EstimateManifest.lines(config, version, shardK, shardN, true,
+                attest ? Optional.of(List.of(Manifest.sha256(samplesText), Manifest.sha256(proposalsText))) : Optional.empty()));
         return report;
+    }
+
+    /** Whether {@code folder}'s manifest keeps the digests of its samples and proposals. */
+    public static boolean attested(Path folder) throws IOException {
+        return EstimateManifest.parse(Files.readAllLines(folder.resolve(EstimateManifest.FILE)))
+                .containsKey(EstimateManifest.SAMPLES_SHA256);
     }
 
     /**
@@ -60,6 +74,7 @@ public final class EstimateFolder {
         Map<String, String> first = null;
         TreeSet<Integer> seen = new TreeSet<>();
         int n = -1;
+        boolean attest = true;
         List<String> samples = new ArrayList<>();
         List<String> proposals = new ArrayList<>();
         for (Path shard : shards) {
@@ -84,6 +99,8 @@ public final class EstimateFolder {
                 throw new IllegalArgumentException(shard + " is shard " + k + "/" + thisN + ", " + (thisN != n
                         ? "not one of " + n : "named twice"));
             }
+            attest &= verified(shard, m, SAMPLES, EstimateManifest.SAMPLES_SHA256)
+                    & verified(shard, m, PROPOSALS, EstimateManifest.PROPOSALS_SHA256);
             samples.addAll(body(shard.resolve(SAMPLES)));
             proposals.addAll(body(shard.resolve(PROPOSALS)));
         }
@@ -94,14 +111,34 @@ public final class EstimateFolder {
         Comparator<String> byReplication = Comparator.comparingInt(l -> Integer.parseInt(l.substring(0, l.indexOf(','))));
         samples.sort(byReplication);
         proposals.sort(byReplication);
-        return write(target, EstimateManifest.config(first), first.get("version"), 1, 1, samples, proposals);
+        return write(target, EstimateManifest.config(first), first.get("version"), 1, 1, samples, proposals, attest);
+    }
+
+    /**
+     * Whether {@code file} of {@code shard} is the one its manifest's digest names; false where the manifest keeps none.
+     *
+     * @throws IllegalArgumentException when the file was changed after sitcov wrote it
+     */
+    private static boolean verified(Path shard, Map<String, String> manifest, String file, String key) throws IOException {
+        String digest = manifest.get(key);
+        if (digest == null) {
+            return false;
+        }
+        if (!digest.equals(Manifest.sha256(Files.readString(shard.resolve(file), StandardCharsets.UTF_8)))) {
+            throw new IllegalArgumentException(shard.resolve(file) + " was changed after sitcov wrote it (it does not match "
+                    + key + " in " + EstimateManifest.FILE + "); put back the file the estimate wrote, or run the estimate"
+                    + " again into a new folder");
+        }
+        return true;
     }
 
     private static boolean samePlan(Map<String, String> a, Map<String, String> b) {
         Map<String, String> x = new java.util.HashMap<>(a);
         Map<String, String> y = new java.util.HashMap<>(b);
-        x.remove("shard");
-        y.remove("shard");
+        for (String perShard : List.of("shard", EstimateManifest.SAMPLES_SHA256, EstimateManifest.PROPOSALS_SHA256)) {
+            x.remove(perShard);
+            y.remove(perShard);
+        }
         return x.equals(y);
     }
 
@@ -127,10 +164,18 @@ public final class EstimateFolder {
         return all;
     }
 
-    /** Written whole: into a temporary file beside it, then moved into place. */
     private static void writeLines(Path file, List<String> lines) throws IOException {
+        write(file, text(lines));
+    }
+
+    private static String text(List<String> lines) {
+        return String.join("\n", lines) + "\n";
+    }
+
+    /** Written whole: into a temporary file beside it, then moved into place. */
+    private static void write(Path file, String text) throws IOException {
         Path tmp = file.resolveSibling("." + file.getFileName() + ".tmp");
-        Files.write(tmp, (String.join("\n", lines) + "\n").getBytes(StandardCharsets.UTF_8));
+        Files.write(tmp, text.getBytes(StandardCharsets.UTF_8));
         Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
     }
 }

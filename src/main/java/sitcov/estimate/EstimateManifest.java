@@ -5,23 +5,29 @@ import java.util.EnumSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Collectors;
 import sitcov.world.DrawSite;
 
 /**
- * manifest.properties of an estimate's folder: its plan, the sitcov version, the shard and whether
- * it is complete, one {@code key=value} a line in a fixed order (no date: a folder's bytes depend
- * only on its plan). {@code protocol=estimate} tells it from an experiment's manifest.
+ * manifest.properties of an estimate's folder: its plan, the sitcov version, the shard, the digests of the samples
+ * and proposals written with it, and whether it is complete, one {@code key=value} a line in a fixed order (no date:
+ * a folder's bytes depend only on its plan). {@code protocol=estimate} tells it from an experiment's manifest.
  */
 public final class EstimateManifest {
     public static final String FILE = "manifest.properties";
     public static final String PROTOCOL = "estimate";
+    /** The digests of samples.csv and proposals.csv: what {@code merge} reads is what the estimate wrote. */
+    public static final String SAMPLES_SHA256 = "samples_sha256";
+    public static final String PROPOSALS_SHA256 = "proposals_sha256";
 
     private EstimateManifest() {
     }
 
-    public static List<String> lines(EstimateConfig c, String version, int shardK, int shardN, boolean complete) {
+    /** {@code digests}: the samples' and the proposals' SHA-256, or empty for a folder whose files are unattested. */
+    public static List<String> lines(EstimateConfig c, String version, int shardK, int shardN, boolean complete,
+                                     Optional<List<String>> digests) {
         List<String> l = new ArrayList<>();
         l.add("protocol=" + PROTOCOL);
         l.add("name=" + c.name());
@@ -38,6 +44,10 @@ public final class EstimateManifest {
         l.add("sites=" + sites(c.sites()));
         l.add("version=" + version);
         l.add("shard=" + shardK + "/" + shardN);
+        digests.ifPresent(d -> {
+            l.add(SAMPLES_SHA256 + "=" + d.get(0));
+            l.add(PROPOSALS_SHA256 + "=" + d.get(1));
+        });
         l.add("complete=" + complete);
         return l;
     }

@@ -234,7 +234,8 @@ public record Manifest(ExperimentConfig config, String version, Shard shard, boo
         return v.strip();
     }
 
-    static String sha256(String text) {
+    /** The SHA-256 of {@code text}'s UTF-8 bytes, in hex: how sitcov's manifests name what a file held. */
+    public static String sha256(String text) {
         try {
             return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8)));
         } catch (NoSuchAlgorithmException e) {

@@ -64,6 +64,38 @@ class EstimateCommandTest {
     }
 
     @Test
+    void mergeRefusesASampleChangedByHandNamingTheFileAndWritesNothing() throws Exception {
+        Path edited = dir.resolve("edited");
+        ResultsFolders.copy(dir.resolve("whole"), edited);
+        assertTrue(Files.readString(edited.resolve("manifest.properties")).contains("samples_sha256="), "a digest kept");
+        Path samples = edited.resolve("samples.csv");
+        // a run's failure flipped: a plausible edit that would change every estimate
+        List<String> lines = new java.util.ArrayList<>(Files.readAllLines(samples));
+        lines.set(1, lines.get(1).replaceFirst(",0,0,0,0,0,0,0,", ",0,0,0,0,1,0,0,"));
+        assertFalse(lines.get(1).equals(Files.readAllLines(samples).get(1)), "the row was edited: " + lines.get(1));
+        Files.write(samples, lines);
+        Path out = dir.resolve("from-edited");
+        CliRunner r = CliRunner.run("merge", edited.toString(), "--out", out.toString());
+        assertEquals(2, r.exitCode(), r.err());
+        assertTrue(r.err().contains("samples.csv was changed after sitcov wrote it (it does not match samples_sha256"), r.err());
+        assertFalse(Files.exists(out.resolve("estimate.csv")), "nothing estimated from an edited samples.csv");
+    }
+
+    @Test
+    void aFolderWrittenBeforeItsDigestsMergesWithAWarningAndStaysUnattested() throws Exception {
+        Path old = dir.resolve("old");
+        ResultsFolders.copy(dir.resolve("whole"), old);
+        Path manifest = old.resolve("manifest.properties");
+        Files.write(manifest, Files.readAllLines(manifest).stream().filter(l -> !l.contains("_sha256=")).toList());
+        Path out = dir.resolve("from-old");
+        CliRunner r = CliRunner.run("merge", old.toString(), "--out", out.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.err().contains("keeps no digest of its samples"), r.err());
+        assertArrayEquals(Files.readAllBytes(dir.resolve("whole/estimate.csv")), Files.readAllBytes(out.resolve("estimate.csv")));
+        assertFalse(Files.readString(out.resolve("manifest.properties")).contains("_sha256="), "left unattested");
+    }
+
+    @Test
     void mergeRefusesAMissingShardNamingIt() {
         Path lone = dir.resolve("lone");
         assertEquals(0, CliRunner.run("estimate", preset.toString(), "--shard", "1/2", "--out", lone.toString()).exitCode());

@@ -33,6 +33,8 @@ class KeptResultsTest {
         }
         assertTrue(campaigns.size() >= 3, "the kept campaigns: " + campaigns);
         for (Path kept : campaigns) {
+            assertTrue(Files.readString(kept.resolve(ResultsFolder.CAMPAIGN_MANIFEST)).contains("trials_sha256="),
+                    kept + " keeps the digest of its campaign.csv, so a hand edit to it is refused");
             Path copy = dir.resolve(kept.getFileName().toString());
             ResultsFolders.copyCampaignTrials(kept, copy);
             CliRunner r = CliRunner.run("report", copy.toString());
@@ -59,6 +61,8 @@ class KeptResultsTest {
         }
         assertTrue(estimates.size() >= 3, "the kept estimates: " + estimates);
         for (Path kept : estimates) {
+            assertTrue(Files.readString(kept.resolve("manifest.properties")).contains("samples_sha256="),
+                    kept + " keeps the digest of its samples, so a hand edit to them is refused");
             Path copy = dir.resolve(kept.getFileName().toString());
             Files.createDirectories(copy);
             List<String> published;

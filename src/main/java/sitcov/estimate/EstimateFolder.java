@@ -12,6 +12,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.TreeSet;
 import sitcov.results.Manifest;
+import sitcov.results.ManifestChecks;
 
 /**
  * An estimate's results folder: manifest.properties, samples.csv, proposals.csv, estimate.csv and
@@ -81,7 +82,13 @@ public final class EstimateFolder {
             if (!isEstimate(shard)) {
                 throw new IllegalArgumentException(shard + " holds no estimate (no manifest.properties with protocol=estimate)");
             }
-            Map<String, String> m = EstimateManifest.parse(Files.readAllLines(shard.resolve(EstimateManifest.FILE)));
+            Path file = shard.resolve(EstimateManifest.FILE);
+            String text = Files.readString(file, StandardCharsets.UTF_8);
+            Map<String, String> m = EstimateManifest.parse(List.of(text.split("\n")));
+            if (m.containsKey(ManifestChecks.CHECKS)) {
+                ManifestChecks.verify(text, file, "put the file back as sitcov wrote it, or run the estimate again into a"
+                        + " new folder");
+            }
             if (!"true".equals(m.get("complete"))) {
                 throw new IllegalArgumentException(shard + " is not complete; run that shard to its end first");
             }
@@ -135,7 +142,8 @@ public final class EstimateFolder {
     private static boolean samePlan(Map<String, String> a, Map<String, String> b) {
         Map<String, String> x = new java.util.HashMap<>(a);
         Map<String, String> y = new java.util.HashMap<>(b);
-        for (String perShard : List.of("shard", EstimateManifest.SAMPLES_SHA256, EstimateManifest.PROPOSALS_SHA256)) {
+        for (String perShard : List.of("shard", EstimateManifest.SAMPLES_SHA256, EstimateManifest.PROPOSALS_SHA256,
+                ManifestChecks.CHECKS)) {
             x.remove(perShard);
             y.remove(perShard);
         }

@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Collectors;
+import sitcov.results.ManifestChecks;
 import sitcov.world.DrawSite;
 
 /**
@@ -25,7 +26,10 @@ public final class EstimateManifest {
     private EstimateManifest() {
     }
 
-    /** {@code digests}: the samples' and the proposals' SHA-256, or empty for a folder whose files are unattested. */
+    /**
+     * {@code digests}: the samples' and the proposals' SHA-256, written with the checks of every line
+     * (experiments/README.md, "Guarded against hand edits"); empty for a folder whose files are unattested.
+     */
     public static List<String> lines(EstimateConfig c, String version, int shardK, int shardN, boolean complete,
                                      Optional<List<String>> digests) {
         List<String> l = new ArrayList<>();
@@ -44,12 +48,14 @@ public final class EstimateManifest {
         l.add("sites=" + sites(c.sites()));
         l.add("version=" + version);
         l.add("shard=" + shardK + "/" + shardN);
-        digests.ifPresent(d -> {
-            l.add(SAMPLES_SHA256 + "=" + d.get(0));
-            l.add(PROPOSALS_SHA256 + "=" + d.get(1));
-        });
-        l.add("complete=" + complete);
-        return l;
+        if (digests.isEmpty()) {
+            l.add("complete=" + complete);
+            return l;
+        }
+        l.add(SAMPLES_SHA256 + "=" + digests.get().get(0));
+        l.add(PROPOSALS_SHA256 + "=" + digests.get().get(1));
+        // attested: its own lines checked too, so the plan the estimates are made under cannot be edited unnoticed
+        return ManifestChecks.inOrder(l, complete);
     }
 
     /** The sites in {@link DrawSite} order, by key. */

@@ -12,8 +12,8 @@ import java.util.TreeMap;
  * tool itself flips. A hand edit is refused naming the key changed, added or removed
  * (experiments/README.md, "Guarded against hand edits").
  */
-final class ManifestChecks {
-    static final String CHECKS = "checks";
+public final class ManifestChecks {
+    public static final String CHECKS = "checks";
     static final String COMPLETE = "complete";
 
     private ManifestChecks() {
@@ -35,12 +35,23 @@ final class ManifestChecks {
     }
 
     /**
+     * {@code lines} (each {@code key=value}, in the file's own order) followed by their checks and {@code complete}:
+     * for a properties file whose order is its own, as an estimate's manifest is.
+     */
+    public static List<String> inOrder(List<String> lines, boolean complete) {
+        List<String> rows = new ArrayList<>(lines);
+        rows.add(CHECKS + "=" + String.join(" ", lines.stream().map(JournalCheck::crc).toList()));
+        rows.add(COMPLETE + "=" + complete);
+        return rows;
+    }
+
+    /**
      * Refuses a file whose lines are not those its checks were made of, naming the keys that were
      * changed, added or removed.
      *
      * @param fix what the user can do, ending the message
      */
-    static void verify(String text, Path file, String fix) {
+    public static void verify(String text, Path file, String fix) {
         List<String> lines = new ArrayList<>();
         String checks = "";
         for (String line : text.split("\n", -1)) {

@@ -86,13 +86,27 @@ class EstimateCommandTest {
         Path old = dir.resolve("old");
         ResultsFolders.copy(dir.resolve("whole"), old);
         Path manifest = old.resolve("manifest.properties");
-        Files.write(manifest, Files.readAllLines(manifest).stream().filter(l -> !l.contains("_sha256=")).toList());
+        Files.write(manifest, Files.readAllLines(manifest).stream()
+                .filter(l -> !l.contains("_sha256=") && !l.startsWith("checks=")).toList());
         Path out = dir.resolve("from-old");
         CliRunner r = CliRunner.run("merge", old.toString(), "--out", out.toString());
         assertEquals(0, r.exitCode(), r.err());
         assertTrue(r.err().contains("keeps no digest of its samples"), r.err());
         assertArrayEquals(Files.readAllBytes(dir.resolve("whole/estimate.csv")), Files.readAllBytes(out.resolve("estimate.csv")));
         assertFalse(Files.readString(out.resolve("manifest.properties")).contains("_sha256="), "left unattested");
+    }
+
+    @Test
+    void aPlanChangedByHandInTheManifestIsRefusedNamingTheKey() throws Exception {
+        Path edited = dir.resolve("edited-plan");
+        ResultsFolders.copy(dir.resolve("whole"), edited);
+        Path manifest = edited.resolve("manifest.properties");
+        List<String> lines = Files.readAllLines(manifest);
+        assertTrue(lines.contains("defensive=0.1"), lines.toString());
+        Files.write(manifest, lines.stream().map(l -> l.equals("defensive=0.1") ? "defensive=0.3" : l).toList());
+        CliRunner r = CliRunner.run("merge", edited.toString(), "--out", dir.resolve("from-edited-plan").toString());
+        assertEquals(2, r.exitCode(), r.err());
+        assertTrue(r.err().contains("manifest.properties: defensive was changed after sitcov wrote it"), r.err());
     }
 
     @Test

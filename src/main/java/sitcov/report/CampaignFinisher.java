@@ -92,8 +92,8 @@ public final class CampaignFinisher {
         CampaignConfig c = manifest.config();
         if (keepsOnlyTrials(folder, c)) {
             Path file = folder.resolve(CampaignCsv.TRIALS);
+            manifest.verifyTrials(folder, Files.readString(file));
             List<String> lines = Files.readAllLines(file);
-            manifest.verifyTrials(folder, lines);
             return CampaignAnalysis.of(c, CampaignCsv.readTrials(c, file, lines));
         }
         List<CampaignTrial> trials = new ArrayList<>();

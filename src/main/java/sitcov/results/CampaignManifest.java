@@ -78,22 +78,24 @@ public record CampaignManifest(CampaignConfig config, String version, Shard shar
         return new CampaignManifest(config, version, shard, done, checked, done ? trialsSha256 : Optional.empty());
     }
 
-    /** Complete, with the digest of the campaign.csv just written beside it. */
+    /** Complete, with the digest of the campaign.csv just written beside it, whose rows are {@code trials}. */
     public CampaignManifest completeWith(List<String> trials) {
-        return new CampaignManifest(config, version, shard, true, checked, Optional.of(Manifest.sha256(String.join("\n", trials))));
+        return new CampaignManifest(config, version, shard, true, checked,
+                Optional.of(Manifest.sha256(String.join("\n", trials) + "\n")));
     }
 
     /**
-     * Checks that campaign.csv's {@code trials} are the ones this manifest was written with.
+     * Checks that campaign.csv, whose content is {@code text}, is the one this manifest was written with
+     * ({@code trials_sha256} is the file's SHA-256, as {@code sha256sum campaign.csv} gives it).
      *
      * @return false where the manifest, written before it held the digest, cannot tell
      * @throws IllegalArgumentException when campaign.csv was changed after sitcov wrote it
      */
-    public boolean verifyTrials(Path folder, List<String> trials) {
+    public boolean verifyTrials(Path folder, String text) {
         if (trialsSha256.isEmpty()) {
             return false;
         }
-        if (!trialsSha256.get().equals(Manifest.sha256(String.join("\n", trials)))) {
+        if (!trialsSha256.get().equals(Manifest.sha256(text))) {
             throw new IllegalArgumentException(folder.resolve(ResultsFolder.CAMPAIGN_TRIALS) + " was changed after sitcov"
                     + " wrote it (it does not match " + TRIALS_SHA256 + " in " + FILE + "); put back the file the campaign"
                     + " wrote, or run the campaign again into a new folder: " + Manifest.again(folder));

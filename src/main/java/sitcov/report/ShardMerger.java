@@ -42,9 +42,42 @@ public final class ShardMerger {
             manifests.add(Manifest.read(shard));
         }
         Manifest first = manifests.get(0);
+        Path[] byK = shardsByK(shards, manifests);
+        int n = first.shard().n();
+        boolean resumed = manifests.stream().anyMatch(Manifest::resumed);
+        Journal journal = joined(byK, shards, manifests);
+        // a shard written before checks leaves the merged folder without them: its rows were never checked
+        boolean checked = manifests.stream().allMatch(Manifest::checked);
+        // recordings=all only where every shard kept every run: another's passing runs are not at hand
+        Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed, checked,
+                manifests.stream().allMatch(Manifest::recordsAll));
+        Files.createDirectories(out);
+        try (FolderLock lock = FolderLock.claim(out)) {
+            // checked under the lock: of two merges into one folder, the later finds the earlier's files
+            try (Stream<Path> files = Files.list(out)) {
+                if (files.anyMatch(f -> !f.getFileName().toString().equals(ResultsFolder.LOCK))) {
+                    throw new IllegalArgumentException(out + " holds files already; merge into a new or empty folder");
+                }
+            }
+            merged.write(out);
+            for (int k = 1; k <= n; k++) {
+                copySituations(byK[k], out);
+            }
+            Map<String, String> facts = new TreeMap<>(execution);
+            facts.put("merged_shards", String.join(" ", Stream.of(byK).skip(1).map(Path::toString).toList()));
+            return ResultsFinisher.finish(out, merged, journal, facts, builtin);
+        }
+    }
+
+    /**
+     * The shard folders by their K, each checked to be a complete shard of the same experiment and split.
+     *
+     * @throws IllegalArgumentException naming the folder that does not fit, or the shards missing
+     */
+    private static Path[] shardsByK(List<Path> shards, List<Manifest> manifests) {
+        Manifest first = manifests.get(0);
         int n = first.shard().n();
         Path[] byK = new Path[n + 1];
-        boolean resumed = false;
         for (int i = 0; i < shards.size(); i++) {
             Manifest m = manifests.get(i);
             Path folder = shards.get(i);
@@ -67,7 +100,6 @@ public final class ShardMerger {
                 throw new IllegalArgumentException("shard " + m.shard() + " is given twice: " + byK[m.shard().k()] + " and " + folder);
             }
             byK[m.shard().k()] = folder;
-            resumed |= m.resumed();
         }
         List<String> missing = new ArrayList<>();
         for (int k = 1; k <= n; k++) {
@@ -79,6 +111,12 @@ public final class ShardMerger {
             throw new IllegalArgumentException("shard" + (missing.size() > 1 ? "s " : " ") + String.join(", ", missing)
                     + " missing: merge needs all " + n + " shards");
         }
+        return byK;
+    }
+
+    /** The shards' journals joined in shard order, each map in its order, every row checked to be its shard's share. */
+    private static Journal joined(Path[] byK, List<Path> shards, List<Manifest> manifests) throws IOException {
+        int n = byK.length - 1;
         Journal journal = Journal.empty();
         for (int k = 1; k <= n; k++) {
             Journal part = JournalFiles.read(byK[k], manifests.get(shards.indexOf(byK[k])));
@@ -93,27 +131,7 @@ public final class ShardMerger {
                 journal.add(f);
             }
         }
-        // a shard written before checks leaves the merged folder without them: its rows were never checked
-        boolean checked = manifests.stream().allMatch(Manifest::checked);
-        // recordings=all only where every shard kept every run: another's passing runs are not at hand
-        Manifest merged = new Manifest(first.config(), first.version(), sitcov.experiment.Shard.WHOLE, false, resumed, checked,
-                manifests.stream().allMatch(Manifest::recordsAll));
-        Files.createDirectories(out);
-        try (FolderLock lock = FolderLock.claim(out)) {
-            // checked under the lock: of two merges into one folder, the later finds the earlier's files
-            try (Stream<Path> files = Files.list(out)) {
-                if (files.anyMatch(f -> !f.getFileName().toString().equals(ResultsFolder.LOCK))) {
-                    throw new IllegalArgumentException(out + " holds files already; merge into a new or empty folder");
-                }
-            }
-            merged.write(out);
-            for (int k = 1; k <= n; k++) {
-                copySituations(byK[k], out);
-            }
-            Map<String, String> facts = new TreeMap<>(execution);
-            facts.put("merged_shards", String.join(" ", Stream.of(byK).skip(1).map(Path::toString).toList()));
-            return ResultsFinisher.finish(out, merged, journal, facts, builtin);
-        }
+        return journal;
     }
 
     private static void checkShare(Path folder, int k, int n, int replication) {

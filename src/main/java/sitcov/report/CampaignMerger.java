@@ -6,12 +6,10 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.stream.Stream;
 import sitcov.control.ControllerFactory;
 import sitcov.experiment.CampaignTarget;
 import sitcov.results.CampaignManifest;
 import sitcov.results.FolderLock;
-import sitcov.results.ResultsFolder;
 
 /**
  * Combines the folders of shards 1/N … N/N of one campaign into the folder the unsharded campaign would have
@@ -65,11 +63,7 @@ public final class CampaignMerger {
         CampaignManifest merged = first.whole().complete(false);
         Files.createDirectories(out);
         try (FolderLock lock = FolderLock.claim(out)) {
-            try (Stream<Path> files = Files.list(out)) {
-                if (files.anyMatch(f -> !f.getFileName().toString().equals(ResultsFolder.LOCK))) {
-                    throw new IllegalArgumentException(out + " holds files already; merge into a new or empty folder");
-                }
-            }
+            ShardMerger.requireEmpty(out);
             merged.write(out);
             for (CampaignTarget t : merged.config().targets()) {
                 ShardMerger.merge(shards.stream().map(s -> s.resolve(t.folder())).toList(), out.resolve(t.folder()),

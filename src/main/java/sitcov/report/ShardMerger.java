@@ -53,12 +53,7 @@ public final class ShardMerger {
                 manifests.stream().allMatch(Manifest::recordsAll));
         Files.createDirectories(out);
         try (FolderLock lock = FolderLock.claim(out)) {
-            // checked under the lock: of two merges into one folder, the later finds the earlier's files
-            try (Stream<Path> files = Files.list(out)) {
-                if (files.anyMatch(f -> !f.getFileName().toString().equals(ResultsFolder.LOCK))) {
-                    throw new IllegalArgumentException(out + " holds files already; merge into a new or empty folder");
-                }
-            }
+            requireEmpty(out);
             merged.write(out);
             for (int k = 1; k <= n; k++) {
                 copySituations(byK[k], out);
@@ -66,6 +61,18 @@ public final class ShardMerger {
             Map<String, String> facts = new TreeMap<>(execution);
             facts.put("merged_shards", String.join(" ", Stream.of(byK).skip(1).map(Path::toString).toList()));
             return ResultsFinisher.finish(out, merged, journal, facts, builtin);
+        }
+    }
+
+    /**
+     * Refuses a merge into a folder that holds anything but its lock. Called under the lock: of two merges into one
+     * folder, the later finds the earlier's files.
+     */
+    static void requireEmpty(Path out) throws IOException {
+        try (Stream<Path> files = Files.list(out)) {
+            if (files.anyMatch(f -> !f.getFileName().toString().equals(ResultsFolder.LOCK))) {
+                throw new IllegalArgumentException(out + " holds files already; merge into a new or empty folder");
+            }
         }
     }
 
